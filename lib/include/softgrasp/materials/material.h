@@ -1,0 +1,130 @@
+#ifndef softgrasp_materials_material_h
+#define softgrasp_materials_material_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <softgrasp/materials/isochoric_model.h>
+#include <softgrasp/materials/volumetric_energy.h>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace softgrasp
+{
+  /**
+   * Thrown when a material is evaluated at a deformation gradient with
+   * J = det F <= 0 (an inverted element) or a non-finite F. Solvers catch it
+   * to cut the step back.
+   */
+  class InvertedMaterialState : public std::runtime_error
+  {
+  public:
+    explicit InvertedMaterialState(const double J);
+    const double J;
+  };
+
+  /**
+   * A hyperelastic material evaluated at one quadrature point: the
+   * decoupled strain energy Psi(C) = U(J) + Psi_iso(Cbar), Cbar = J^{-2/3} C,
+   * with an IsochoricModel and a VolumetricEnergy, plus a reference density.
+   * It returns
+   *  - the second Piola-Kirchhoff stress S = 2 dPsi/dC and the material
+   *    tangent CC = 2 dS/dC = dS/dE (both Pa), or
+   *  - the Kirchhoff stress tau = F S F^T and the spatial tangent
+   *    J cc = push-forward of CC (both Pa),
+   * and the dilatational wave speed (m/s) for explicit time steps.
+   *
+   * The chain rule through Cbar(C) is done here, once, for every model:
+   *   dCbar/dC = f (II - 1/3 C (x) C^{-1}),  f = J^{-2/3},
+   *   dPsi_iso/dC = f DEV(X),  X = dPsi_iso/dCbar,
+   * and the second derivative adds the curvature of Cbar(C) contracted with
+   * X. Materials are 3D; 2D problems use the plane-strain embedding.
+   */
+  class Material
+  {
+  public:
+    /// Stress and tangent at one point.
+    struct Response
+    {
+      double                        energy = 0; ///< Psi (Pa)
+      dealii::SymmetricTensor<2, 3> stress;     ///< S or tau (Pa)
+      dealii::SymmetricTensor<4, 3> tangent;    ///< CC or J cc (Pa)
+    };
+
+    Material(std::string                     name,
+             std::unique_ptr<IsochoricModel> isochoric_model,
+             const VolumetricEnergy         &volumetric_energy,
+             const double                    density);
+
+    /// S and (if @p with_tangent) dS/dE at deformation gradient @p F.
+    void
+    evaluate_material(const dealii::Tensor<2, 3> &F,
+                      const StructuralDirections &directions,
+                      const bool                  with_tangent,
+                      Response                   &response) const;
+
+    /// tau and (if @p with_tangent) J cc at deformation gradient @p F.
+    void
+    evaluate_spatial(const dealii::Tensor<2, 3> &F,
+                     const StructuralDirections &directions,
+                     const bool                  with_tangent,
+                     Response                   &response) const;
+
+    /// Psi(F) (Pa).
+    double
+    strain_energy(const dealii::Tensor<2, 3> &F,
+                  const StructuralDirections &directions) const;
+
+    /// Cauchy stress sigma = tau / J (Pa).
+    dealii::SymmetricTensor<2, 3>
+    cauchy_stress(const dealii::Tensor<2, 3> &F,
+                  const StructuralDirections &directions) const;
+
+    /**
+     * Largest speed (m/s) of a plane longitudinal/shear wave in the current
+     * state, from the acoustic tensor Q(N)_ik = A_iJkL N_J N_L / rho_0 of the
+     * first elasticity tensor A = dP/dF, maximised over a fixed set of 13
+     * reference directions (axes, face and body diagonals) and the principal
+     * directions of C. Exact for isotropic materials in the reference state;
+     * an estimate otherwise, to be used with a safety factor. Pairs with the
+     * reference element size in total-Lagrangian explicit dynamics.
+     */
+    double
+    dilatational_wave_speed(const dealii::Tensor<2, 3> &F,
+                            const StructuralDirections &directions) const;
+
+    /// sqrt((kappa + 4/3 mu_0) / rho_0) (m/s), the small-strain value.
+    double
+    reference_wave_speed() const;
+
+    /// Structural (fibre) directions at reference position @p X (m).
+    StructuralDirections
+    structural_directions(const dealii::Point<3> &X) const;
+
+    double
+    density() const; ///< reference density rho_0 (kg/m^3)
+    double
+    initial_shear_modulus() const; ///< mu_0 (Pa)
+    double
+    bulk_modulus() const; ///< kappa (Pa)
+    const std::string &
+    name() const;
+    std::string
+    summary() const;
+    const IsochoricModel &
+    isochoric_model() const;
+    const VolumetricEnergy &
+    volumetric_energy() const;
+
+  private:
+    std::string                     material_name;
+    std::unique_ptr<IsochoricModel> model;
+    VolumetricEnergy                volumetric;
+    double                          rho0;
+  };
+} // namespace softgrasp
+
+#endif

@@ -1,0 +1,42 @@
+#ifndef softgrasp_postprocess_strain_postprocessor_h
+#define softgrasp_postprocess_strain_postprocessor_h
+
+#include <deal.II/numerics/data_postprocessor.h>
+
+namespace softgrasp
+{
+  /**
+   * DataPostprocessor for DataOut: the principal strains of the paper
+   * (see PrincipalStrains) from the displacement field, which occupies
+   * components [first_component, first_component + dim) of the solution.
+   * Outputs: e_max, e_mid, e_min (1), J (1), and the reference direction
+   * n_max of the largest principal stretch (a vector). In 2D the state is
+   * plane strain, so one principal stretch is the out-of-plane 1.
+   */
+  template <int dim>
+  class StrainPostprocessor : public dealii::DataPostprocessor<dim>
+  {
+  public:
+    explicit StrainPostprocessor(const unsigned int first_component = 0);
+
+    void
+    evaluate_vector_field(
+      const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
+      std::vector<dealii::Vector<double>> &computed_quantities) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    std::vector<
+      dealii::DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
+
+    dealii::UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const unsigned int first_component;
+  };
+} // namespace softgrasp
+
+#endif
