@@ -37,7 +37,8 @@ namespace softgrasp
             residual = std::max(residual,
                                 std::abs(response.stress[free[a]][free[a]]));
           scale = std::max(scale, material.initial_shear_modulus());
-          if (residual <= 1e-13 * scale)
+          // round-off in the stress grows with the bulk modulus
+          if (residual <= std::max(1e-12 * scale, 1e-14 * material.bulk_modulus()))
             break;
           // dS_aa/dl_b = CC_aabb l_b
           FullMatrix<double> K(n, n);

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/array_view.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -9,6 +10,7 @@
 #include <softgrasp/postprocess/principal_strains.h>
 
 #include <limits>
+#include <utility>
 
 namespace softgrasp
 {
@@ -62,8 +64,18 @@ namespace softgrasp
         }
 
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    maxima              = Utilities::MPI::max(maxima, comm);
-    counts              = Utilities::MPI::sum(counts, comm);
+    {
+      std::vector<double>       global_maxima(maxima.size());
+      std::vector<unsigned int> global_counts(counts.size());
+      Utilities::MPI::max(make_array_view(std::as_const(maxima)),
+                          comm,
+                          make_array_view(global_maxima));
+      Utilities::MPI::sum(make_array_view(std::as_const(counts)),
+                          comm,
+                          make_array_view(global_counts));
+      maxima = std::move(global_maxima);
+      counts = std::move(global_counts);
+    }
     values.clear();
     for (unsigned int k = 0; k < ids.size(); ++k)
       if (counts[k] > 0)
