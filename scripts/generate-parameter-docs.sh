@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Regenerate doc/parameters/*.prm (every parameter with its documentation,
+# printed by the programs themselves) from a built tree.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mkdir -p "$root/doc/parameters"
+"$root/build/examples/tissue_curves/tissue_curves" --print-parameters \
+  > "$root/doc/parameters/tissue_curves.prm"
+echo "wrote doc/parameters/tissue_curves.prm"
