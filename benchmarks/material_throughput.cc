@@ -4,10 +4,9 @@
 //
 //   build/benchmarks/material_throughput --benchmark_min_time=0.5
 
+#include <benchmark/benchmark.h>
 #include <softgrasp/materials/material_library.h>
 #include <softgrasp/materials/tissue_presets.h>
-
-#include <benchmark/benchmark.h>
 
 using namespace dealii;
 using namespace softgrasp;
@@ -17,22 +16,20 @@ namespace
   const char *vol = "set Density = 1000\nsubsection Volumetric\nset Poisson's "
                     "ratio = 0.45\nend\n";
 
-  std::shared_ptr<const Material>
-  build(const std::string &fragment)
+  std::shared_ptr<const Material> build(const std::string &fragment)
   {
     ParameterHandler prm;
     MaterialLibrary::declare_parameters(prm);
     MaterialLibrary::parse_input_from_string(
-      prm,
-      "subsection Materials\nset Material ids = 0\nsubsection Material 0\n" +
-        fragment + "\nend\nend\n");
+        prm,
+        "subsection Materials\nset Material ids = 0\nsubsection Material 0\n" +
+            fragment + "\nend\nend\n");
     MaterialLibrary library;
     library.parse_parameters(prm);
     return library.get_shared(0);
   }
 
-  Tensor<2, 3>
-  deformation()
+  Tensor<2, 3> deformation()
   {
     Tensor<2, 3> F;
     F[0][0] = 1.15;
@@ -47,54 +44,55 @@ namespace
   void
   run(benchmark::State &state, const std::string &fragment, const bool tangent)
   {
-    const auto               material = build(fragment);
-    const auto               d = material->structural_directions(Point<3>());
-    const Tensor<2, 3>       F = deformation();
-    Material::Response       r;
+    const auto         material = build(fragment);
+    const auto         d        = material->structural_directions(Point<3>());
+    const Tensor<2, 3> F        = deformation();
+    Material::Response r;
     for (auto _ : state)
-      {
-        material->evaluate_spatial(F, d, tangent, r);
-        benchmark::DoNotOptimize(r);
-      }
+    {
+      material->evaluate_spatial(F, d, tangent, r);
+      benchmark::DoNotOptimize(r);
+    }
     state.SetItemsProcessed(state.iterations());
   }
 
   const std::vector<std::pair<std::string, std::string>> models = {
-    {"neo-Hookean",
-     std::string("set Model = neo-Hookean\n") + vol +
-       "subsection neo-Hookean\nset Shear modulus = 1e4\nend"},
-    {"Mooney-Rivlin",
-     std::string("set Model = Mooney-Rivlin\n") + vol +
-       "subsection Mooney-Rivlin\nset C10 = 4e3\nset C01 = 1e3\nend"},
-    {"Ogden-3",
-     std::string("set Model = Ogden\n") + vol +
-       "subsection Ogden\nset Moduli = 6.3e3, 0.012e3, -0.1e3\nset Exponents "
-       "= 1.3, 5.0, -2.0\nend"},
-    {"Yeoh-3",
-     std::string("set Model = Yeoh\n") + vol +
-       "subsection Yeoh\nset Coefficients = 5e3, -1e2, 20\nend"},
-    {"Veronda-Westmann",
-     std::string("set Model = Veronda-Westmann\n") + vol +
-       "subsection Veronda-Westmann\nset C1 = 2e3\nset C2 = 5\nend"},
-    {"HGO-2-families",
-     std::string("set Model = Holzapfel-Gasser-Ogden\n") + vol +
-       "subsection Holzapfel-Gasser-Ogden\nset Shear modulus = 1e4\nset k1 = "
-       "5e4\nset k2 = 2\nset Number of fibre families = 2\nsubsection Fibre "
-       "direction 1\nset Function expression = 1; 0.2; 0\nend\nsubsection "
-       "Fibre direction 2\nset Function expression = 1; -0.2; 0\nend\nend"}};
+      {"neo-Hookean",
+       std::string("set Model = neo-Hookean\n") + vol +
+           "subsection neo-Hookean\nset Shear modulus = 1e4\nend"},
+      {"Mooney-Rivlin",
+       std::string("set Model = Mooney-Rivlin\n") + vol +
+           "subsection Mooney-Rivlin\nset C10 = 4e3\nset C01 = 1e3\nend"},
+      {"Ogden-3",
+       std::string("set Model = Ogden\n") + vol +
+           "subsection Ogden\nset Moduli = 6.3e3, 0.012e3, -0.1e3\nset "
+           "Exponents "
+           "= 1.3, 5.0, -2.0\nend"},
+      {"Yeoh-3",
+       std::string("set Model = Yeoh\n") + vol +
+           "subsection Yeoh\nset Coefficients = 5e3, -1e2, 20\nend"},
+      {"Veronda-Westmann",
+       std::string("set Model = Veronda-Westmann\n") + vol +
+           "subsection Veronda-Westmann\nset C1 = 2e3\nset C2 = 5\nend"},
+      {"HGO-2-families",
+       std::string("set Model = Holzapfel-Gasser-Ogden\n") + vol +
+           "subsection Holzapfel-Gasser-Ogden\nset Shear modulus = 1e4\nset k1 "
+           "= "
+           "5e4\nset k2 = 2\nset Number of fibre families = 2\nsubsection "
+           "Fibre "
+           "direction 1\nset Function expression = 1; 0.2; 0\nend\nsubsection "
+           "Fibre direction 2\nset Function expression = 1; -0.2; "
+           "0\nend\nend"}};
 
-  const bool registered = [] {
+  const bool registered = []
+  {
     for (const auto &[name, fragment] : models)
-      {
-        benchmark::RegisterBenchmark(("stress+tangent/" + name).c_str(),
-                                     run,
-                                     fragment,
-                                     true);
-        benchmark::RegisterBenchmark(("stress/" + name).c_str(),
-                                     run,
-                                     fragment,
-                                     false);
-      }
+    {
+      benchmark::RegisterBenchmark(
+          ("stress+tangent/" + name).c_str(), run, fragment, true);
+      benchmark::RegisterBenchmark(
+          ("stress/" + name).c_str(), run, fragment, false);
+    }
     return true;
   }();
 } // namespace

@@ -4,10 +4,8 @@
 #define softgrasp_tests_material_factory_h
 
 #include <deal.II/base/parameter_handler.h>
-
-#include <softgrasp/materials/material_library.h>
-
 #include <memory>
+#include <softgrasp/materials/material_library.h>
 #include <string>
 
 namespace softgrasp_tests
@@ -18,9 +16,10 @@ namespace softgrasp_tests
     dealii::ParameterHandler prm;
     softgrasp::MaterialLibrary::declare_parameters(prm);
     softgrasp::MaterialLibrary::parse_input_from_string(
-      prm,
-      "subsection Materials\n set Material ids = 0\n subsection Material 0\n" +
-        fragment + "\n end\nend\n");
+        prm,
+        "subsection Materials\n set Material ids = 0\n subsection Material "
+        "0\n" +
+            fragment + "\n end\nend\n");
     softgrasp::MaterialLibrary library;
     library.parse_parameters(prm);
     return library.get_shared(0);
@@ -37,34 +36,36 @@ namespace softgrasp_tests
                             volumetric + "\nset Poisson's ratio = " + poisson +
                             "\nend\n";
     return {
-      {"neo-Hookean",
-       "set Model = neo-Hookean\n" + vol +
-         "subsection neo-Hookean\nset Shear modulus = 1e4\nend"},
-      {"Mooney-Rivlin",
-       "set Model = Mooney-Rivlin\n" + vol +
-         "subsection Mooney-Rivlin\nset C10 = 4e3\nset C01 = 1e3\nend"},
-      {"Ogden",
-       "set Model = Ogden\n" + vol +
-         "subsection Ogden\nset Moduli = 6.3e3, 0.012e3, -0.1e3\nset "
-         "Exponents = 1.3, 5.0, -2.0\nend"},
-      {"Yeoh",
-       "set Model = Yeoh\n" + vol +
-         "subsection Yeoh\nset Coefficients = 5e3, -1e2, 20\nend"},
-      {"Veronda-Westmann",
-       "set Model = Veronda-Westmann\n" + vol +
-         "subsection Veronda-Westmann\nset C1 = 2e3\nset C2 = 5\nend"},
-      {"Holzapfel-Gasser-Ogden (1 family)",
-       "set Model = Holzapfel-Gasser-Ogden\n" + vol +
-         "subsection Holzapfel-Gasser-Ogden\nset Shear modulus = 1e4\nset k1 "
-         "= 5e4\nset k2 = 2\nset Dispersion kappa = 0.1\nsubsection Fibre "
-         "direction 1\nset Function expression = 1; 1; 0\nend\nend"},
-      {"Holzapfel-Gasser-Ogden (2 families)",
-       "set Model = Holzapfel-Gasser-Ogden\n" + vol +
-         "subsection Holzapfel-Gasser-Ogden\nset Shear modulus = 1e4\nset k1 "
-         "= 5e4\nset k2 = 2\nset Number of fibre families = 2\nsubsection "
-         "Fibre direction 1\nset Function expression = 1; 0.5; 0\nend\n"
-         "subsection Fibre direction 2\nset Function expression = 1; -0.5; "
-         "0.2\nend\nend"}};
+        {"neo-Hookean",
+         "set Model = neo-Hookean\n" + vol +
+             "subsection neo-Hookean\nset Shear modulus = 1e4\nend"},
+        {"Mooney-Rivlin",
+         "set Model = Mooney-Rivlin\n" + vol +
+             "subsection Mooney-Rivlin\nset C10 = 4e3\nset C01 = 1e3\nend"},
+        {"Ogden",
+         "set Model = Ogden\n" + vol +
+             "subsection Ogden\nset Moduli = 6.3e3, 0.012e3, -0.1e3\nset "
+             "Exponents = 1.3, 5.0, -2.0\nend"},
+        {"Yeoh",
+         "set Model = Yeoh\n" + vol +
+             "subsection Yeoh\nset Coefficients = 5e3, -1e2, 20\nend"},
+        {"Veronda-Westmann",
+         "set Model = Veronda-Westmann\n" + vol +
+             "subsection Veronda-Westmann\nset C1 = 2e3\nset C2 = 5\nend"},
+        {"Holzapfel-Gasser-Ogden (1 family)",
+         "set Model = Holzapfel-Gasser-Ogden\n" + vol +
+             "subsection Holzapfel-Gasser-Ogden\nset Shear modulus = 1e4\nset "
+             "k1 "
+             "= 5e4\nset k2 = 2\nset Dispersion kappa = 0.1\nsubsection Fibre "
+             "direction 1\nset Function expression = 1; 1; 0\nend\nend"},
+        {"Holzapfel-Gasser-Ogden (2 families)",
+         "set Model = Holzapfel-Gasser-Ogden\n" + vol +
+             "subsection Holzapfel-Gasser-Ogden\nset Shear modulus = 1e4\nset "
+             "k1 "
+             "= 5e4\nset k2 = 2\nset Number of fibre families = 2\nsubsection "
+             "Fibre direction 1\nset Function expression = 1; 0.5; 0\nend\n"
+             "subsection Fibre direction 2\nset Function expression = 1; -0.5; "
+             "0.2\nend\nend"}};
   }
 } // namespace softgrasp_tests
 

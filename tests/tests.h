@@ -5,12 +5,11 @@
 #ifndef softgrasp_tests_h
 #define softgrasp_tests_h
 
+#include <cmath>
+#include <cstdlib>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
-
-#include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -18,16 +17,14 @@
 
 namespace softgrasp_tests
 {
-  inline std::ofstream &
-  logfile()
+  inline std::ofstream &logfile()
   {
     static std::ofstream file;
     return file;
   }
 
   /// Send deallog to the file "output" (on MPI rank 0 only).
-  inline void
-  initlog(const unsigned int precision = 6)
+  inline void initlog(const unsigned int precision = 6)
   {
     if (dealii::Utilities::MPI::job_supports_mpi() &&
         dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
@@ -47,36 +44,35 @@ namespace softgrasp_tests
   }
 
   /// |a - b| <= rtol |b| + atol
-  inline bool
-  close(const double a, const double b, const double rtol, const double atol = 0)
+  inline bool close(const double a,
+                    const double b,
+                    const double rtol,
+                    const double atol = 0)
   {
     return std::abs(a - b) <= rtol * std::abs(b) + atol;
   }
 } // namespace softgrasp_tests
 
 /// Abort the test with a message if @p cond is false.
-#define SG_CHECK(cond, what)                                              \
-  do                                                                      \
-    {                                                                     \
-      if (!(cond))                                                        \
-        softgrasp_tests::fail(std::string(what) + "  [" #cond "]",       \
-                              __FILE__,                                   \
-                              __LINE__);                                  \
-    }                                                                     \
-  while (false)
+#define SG_CHECK(cond, what)                                                   \
+  do                                                                           \
+  {                                                                            \
+    if (!(cond))                                                               \
+      softgrasp_tests::fail(                                                   \
+          std::string(what) + "  [" #cond "]", __FILE__, __LINE__);            \
+  } while (false)
 
 /// Abort unless |a - b| <= rtol |b| + atol.
-#define SG_CHECK_CLOSE(a, b, rtol, atol, what)                            \
-  do                                                                      \
-    {                                                                     \
-      const double sg_a = (a), sg_b = (b);                                \
-      if (!softgrasp_tests::close(sg_a, sg_b, (rtol), (atol)))            \
-        softgrasp_tests::fail(std::string(what) + ": got " +              \
-                                std::to_string(sg_a) + ", expected " +    \
-                                std::to_string(sg_b),                     \
-                              __FILE__,                                   \
-                              __LINE__);                                  \
-    }                                                                     \
-  while (false)
+#define SG_CHECK_CLOSE(a, b, rtol, atol, what)                                 \
+  do                                                                           \
+  {                                                                            \
+    const double sg_a = (a), sg_b = (b);                                       \
+    if (!softgrasp_tests::close(sg_a, sg_b, (rtol), (atol)))                   \
+      softgrasp_tests::fail(std::string(what) + ": got " +                     \
+                                std::to_string(sg_a) + ", expected " +         \
+                                std::to_string(sg_b),                          \
+                            __FILE__,                                          \
+                            __LINE__);                                         \
+  } while (false)
 
 #endif

@@ -28,19 +28,17 @@
 
 // @sect3{Include files}
 
+#include <cstdlib>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-
-#include <softgrasp/base/input_error.h>
-#include <softgrasp/materials/homogeneous_loading.h>
-#include <softgrasp/materials/material_library.h>
-#include <softgrasp/materials/tissue_presets.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/materials/homogeneous_loading.h>
+#include <softgrasp/materials/material_library.h>
+#include <softgrasp/materials/tissue_presets.h>
 
 using namespace dealii;
 using namespace softgrasp;
@@ -58,8 +56,7 @@ struct Parameters
   std::vector<std::string> presets;
   bool                     plot = true;
 
-  static void
-  declare(ParameterHandler &prm)
+  static void declare(ParameterHandler &prm)
   {
     prm.declare_entry("Output directory",
                       "tissue_curves_output",
@@ -73,10 +70,8 @@ struct Parameters
                       "1.6",
                       Patterns::Double(0.05),
                       "Largest stretch of each curve. Unit: 1.");
-    prm.declare_entry("Number of points",
-                      "19",
-                      Patterns::Integer(2),
-                      "Points per curve.");
+    prm.declare_entry(
+        "Number of points", "19", Patterns::Integer(2), "Points per curve.");
     prm.declare_entry("Presets",
                       "all",
                       Patterns::Anything(),
@@ -88,8 +83,7 @@ struct Parameters
     MaterialLibrary::declare_parameters(prm);
   }
 
-  void
-  parse(ParameterHandler &prm)
+  void parse(ParameterHandler &prm)
   {
     output_directory = prm.get("Output directory");
     min_stretch      = prm.get_double("Minimum stretch");
@@ -113,15 +107,15 @@ struct Parameters
 // One row per material, loading mode and stretch. The file is written to a
 // temporary name and renamed, so a crash never leaves half a file.
 void
-write_curves(const Parameters                                    &parameters,
+write_curves(const Parameters                                   &parameters,
              const std::vector<std::shared_ptr<const Material>> &materials,
-             const std::filesystem::path                         &csv)
+             const std::filesystem::path                        &csv)
 {
   const std::filesystem::path tmp = csv.string() + ".tmp";
   std::ofstream               out(tmp);
   // gnuplot blocks: one per material, separated by two blank lines
   std::ofstream blocks_uni(csv.parent_path() / "uniaxial.dat"),
-    blocks_bi(csv.parent_path() / "equibiaxial.dat");
+      blocks_bi(csv.parent_path() / "equibiaxial.dat");
   out << "material,mode,stretch,nominal_stress_Pa,cauchy_stress_Pa,"
          "free_stretch,normalised_stress\n"
       << std::setprecision(8);
@@ -129,39 +123,39 @@ write_curves(const Parameters                                    &parameters,
   std::cout << std::left << std::setw(34) << "material" << std::right
             << std::setw(12) << "mu_0 [Pa]" << std::setw(16)
             << "P(1.2) uni [Pa]" << std::setw(16) << "P(1.2) bi [Pa]"
-            << std::setw(12) << "c_d [m/s]" << "\n";
+            << std::setw(12) << "c_d [m/s]"
+            << "\n";
   for (const auto &material : materials)
-    {
-      const StructuralDirections fibres =
+  {
+    const StructuralDirections fibres =
         material->structural_directions(Point<3>());
-      for (unsigned int i = 0; i < parameters.n_points; ++i)
-        {
-          const double l =
-            parameters.min_stretch + (parameters.max_stretch -
-                                      parameters.min_stretch) *
-                                       i / (parameters.n_points - 1.0);
-          const auto uni = HomogeneousLoading::uniaxial(*material, fibres, l);
-          const auto bi  = HomogeneousLoading::equibiaxial(*material, fibres, l);
-          const double mu = material->initial_shear_modulus();
-          out << '"' << material->name() << "\",uniaxial," << l << ","
-              << uni.nominal_stress << "," << uni.cauchy_stress << ","
-              << uni.stretches[1] << "," << uni.nominal_stress / mu << "\n";
-          out << '"' << material->name() << "\",equibiaxial," << l << ","
-              << bi.nominal_stress << "," << bi.cauchy_stress << ","
-              << bi.stretches[2] << "," << bi.nominal_stress / mu << "\n";
-          blocks_uni << l << " " << uni.nominal_stress / mu << "\n";
-          blocks_bi << l << " " << bi.nominal_stress / mu << "\n";
-        }
-      blocks_uni << "\n\n";
-      blocks_bi << "\n\n";
-      const auto uni = HomogeneousLoading::uniaxial(*material, fibres, 1.2);
-      const auto bi  = HomogeneousLoading::equibiaxial(*material, fibres, 1.2);
-      std::cout << std::left << std::setw(34) << material->name() << std::right
-                << std::setprecision(4) << std::setw(12)
-                << material->initial_shear_modulus() << std::setw(16)
-                << uni.nominal_stress << std::setw(16) << bi.nominal_stress
-                << std::setw(12) << material->reference_wave_speed() << "\n";
+    for (unsigned int i = 0; i < parameters.n_points; ++i)
+    {
+      const double l = parameters.min_stretch +
+                       (parameters.max_stretch - parameters.min_stretch) * i /
+                           (parameters.n_points - 1.0);
+      const auto   uni = HomogeneousLoading::uniaxial(*material, fibres, l);
+      const auto   bi  = HomogeneousLoading::equibiaxial(*material, fibres, l);
+      const double mu  = material->initial_shear_modulus();
+      out << '"' << material->name() << "\",uniaxial," << l << ","
+          << uni.nominal_stress << "," << uni.cauchy_stress << ","
+          << uni.stretches[1] << "," << uni.nominal_stress / mu << "\n";
+      out << '"' << material->name() << "\",equibiaxial," << l << ","
+          << bi.nominal_stress << "," << bi.cauchy_stress << ","
+          << bi.stretches[2] << "," << bi.nominal_stress / mu << "\n";
+      blocks_uni << l << " " << uni.nominal_stress / mu << "\n";
+      blocks_bi << l << " " << bi.nominal_stress / mu << "\n";
     }
+    blocks_uni << "\n\n";
+    blocks_bi << "\n\n";
+    const auto uni = HomogeneousLoading::uniaxial(*material, fibres, 1.2);
+    const auto bi  = HomogeneousLoading::equibiaxial(*material, fibres, 1.2);
+    std::cout << std::left << std::setw(34) << material->name() << std::right
+              << std::setprecision(4) << std::setw(12)
+              << material->initial_shear_modulus() << std::setw(16)
+              << uni.nominal_stress << std::setw(16) << bi.nominal_stress
+              << std::setw(12) << material->reference_wave_speed() << "\n";
+  }
   out.close();
   std::filesystem::rename(tmp, csv);
 }
@@ -173,26 +167,26 @@ write_curves(const Parameters                                    &parameters,
 // seven orders of magnitude share one plot.
 void
 plot_curves(const std::vector<std::shared_ptr<const Material>> &materials,
-            const std::filesystem::path                         &dir)
+            const std::filesystem::path                        &dir)
 {
   std::ofstream gp(dir / "tissue_curves.gnuplot");
   gp << "set key top left font ',9'\n"
      << "set grid\nset xlabel 'stretch l'\n"
      << "set ylabel 'nominal stress P / mu_0'\nset yrange [-20:60]\n";
   for (const std::string mode : {"uniaxial", "equibiaxial"})
-    {
-      gp << "set terminal png size 1000,700\nset output '" << mode
-         << ".png'\nset title '" << mode << " stress of the tissue presets'\n"
-         << "plot ";
-      for (unsigned int m = 0; m < materials.size(); ++m)
-        gp << (m ? ", " : "") << "'" << mode << ".dat' index " << m
-           << " using 1:2 with linespoints title '" << materials[m]->name()
-           << "'";
-      gp << "\n";
-    }
+  {
+    gp << "set terminal png size 1000,700\nset output '" << mode
+       << ".png'\nset title '" << mode << " stress of the tissue presets'\n"
+       << "plot ";
+    for (unsigned int m = 0; m < materials.size(); ++m)
+      gp << (m ? ", " : "") << "'" << mode << ".dat' index " << m
+         << " using 1:2 with linespoints title '" << materials[m]->name()
+         << "'";
+    gp << "\n";
+  }
   gp.close();
-  const std::string command = "cd '" + dir.string() +
-                              "' && gnuplot tissue_curves.gnuplot 2>/dev/null";
+  const std::string command =
+      "cd '" + dir.string() + "' && gnuplot tissue_curves.gnuplot 2>/dev/null";
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
     std::cout << "gnuplot not found: plots skipped (the CSV file is there).\n";
   else if (std::system(command.c_str()) != 0)
@@ -207,51 +201,51 @@ int
 main(int argc, char **argv)
 {
   try
+  {
+    const std::string prm_file = argc > 1 ? argv[1] : "tissue_curves.prm";
+    ParameterHandler  prm;
+    Parameters        parameters;
+    Parameters::declare(prm);
+    // --print-parameters: every parameter with its documentation, as
+    // generated from the code (one material subsection shown).
+    if (prm_file == "--print-parameters")
     {
-      const std::string prm_file = argc > 1 ? argv[1] : "tissue_curves.prm";
-      ParameterHandler  prm;
-      Parameters        parameters;
-      Parameters::declare(prm);
-      // --print-parameters: every parameter with its documentation, as
-      // generated from the code (one material subsection shown).
-      if (prm_file == "--print-parameters")
-        {
-          prm.enter_subsection("Materials");
-          prm.enter_subsection("Material 0");
-          MaterialLibrary::declare_material_parameters(prm);
-          prm.leave_subsection();
-          prm.leave_subsection();
-          prm.print_parameters(std::cout, ParameterHandler::PRM);
-          return 0;
-        }
-      MaterialLibrary::parse_input(prm, prm_file);
-      parameters.parse(prm);
-
-      MaterialLibrary library;
-      library.parse_parameters(prm);
-
-      std::vector<std::shared_ptr<const Material>> materials;
-      for (const std::string &name : parameters.presets)
-        materials.push_back(MaterialLibrary::create_preset(name));
-      for (const auto id : library.material_ids())
-        materials.push_back(library.get_shared(id));
-
-      const std::filesystem::path dir(parameters.output_directory);
-      std::filesystem::create_directories(dir);
-      write_curves(parameters, materials, dir / "tissue_curves.csv");
-      std::cout << "Curves: " << (dir / "tissue_curves.csv").string() << "\n";
-      if (parameters.plot)
-        plot_curves(materials, dir);
+      prm.enter_subsection("Materials");
+      prm.enter_subsection("Material 0");
+      MaterialLibrary::declare_material_parameters(prm);
+      prm.leave_subsection();
+      prm.leave_subsection();
+      prm.print_parameters(std::cout, ParameterHandler::PRM);
+      return 0;
     }
+    MaterialLibrary::parse_input(prm, prm_file);
+    parameters.parse(prm);
+
+    MaterialLibrary library;
+    library.parse_parameters(prm);
+
+    std::vector<std::shared_ptr<const Material>> materials;
+    for (const std::string &name : parameters.presets)
+      materials.push_back(MaterialLibrary::create_preset(name));
+    for (const auto id : library.material_ids())
+      materials.push_back(library.get_shared(id));
+
+    const std::filesystem::path dir(parameters.output_directory);
+    std::filesystem::create_directories(dir);
+    write_curves(parameters, materials, dir / "tissue_curves.csv");
+    std::cout << "Curves: " << (dir / "tissue_curves.csv").string() << "\n";
+    if (parameters.plot)
+      plot_curves(materials, dir);
+  }
   catch (const InputError &e)
-    {
-      std::cerr << "Input error: " << e.what() << std::endl;
-      return 1;
-    }
+  {
+    std::cerr << "Input error: " << e.what() << std::endl;
+    return 1;
+  }
   catch (const std::exception &e)
-    {
-      std::cerr << "Error: " << e.what() << std::endl;
-      return 1;
-    }
+  {
+    std::cerr << "Error: " << e.what() << std::endl;
+    return 1;
+  }
   return 0;
 }

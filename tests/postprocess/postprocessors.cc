@@ -5,8 +5,10 @@
 // and the Cauchy/von Mises stress of its material. The VTU output is
 // written; the extremes table must equal the analytic values.
 
-#include <deal.II/base/quadrature_lib.h>
+#include "../tests.h"
+
 #include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -16,14 +18,11 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
-
 #include <softgrasp/materials/material_library.h>
 #include <softgrasp/postprocess/material_id_extremes.h>
 #include <softgrasp/postprocess/principal_strains.h>
 #include <softgrasp/postprocess/strain_postprocessor.h>
 #include <softgrasp/postprocess/stress_postprocessor.h>
-
-#include "../tests.h"
 
 using namespace dealii;
 using namespace softgrasp;
@@ -32,11 +31,11 @@ class HomogeneousDisplacement : public Function<3>
 {
 public:
   explicit HomogeneousDisplacement(const Tensor<2, 3> &F)
-    : Function<3>(3)
-    , F(F)
-  {}
-  double
-  value(const Point<3> &X, const unsigned int c) const override
+      : Function<3>(3)
+      , F(F)
+  {
+  }
+  double value(const Point<3> &X, const unsigned int c) const override
   {
     return (F * X)[c] - X[c];
   }
@@ -61,10 +60,11 @@ main(int argc, char **argv)
   ParameterHandler prm;
   MaterialLibrary::declare_parameters(prm);
   MaterialLibrary::parse_input_from_string(
-    prm,
-    "subsection Materials\nset Material ids = 1, 2\nsubsection Material 1\nset "
-    "Preset = skin\nend\nsubsection Material 2\nset Preset = subcutaneous "
-    "fat\nend\nend\n");
+      prm,
+      "subsection Materials\nset Material ids = 1, 2\nsubsection Material "
+      "1\nset "
+      "Preset = skin\nend\nsubsection Material 2\nset Preset = subcutaneous "
+      "fat\nend\nend\n");
   MaterialLibrary materials;
   materials.parse_parameters(prm);
 
@@ -73,9 +73,8 @@ main(int argc, char **argv)
   dof_handler.distribute_dofs(fe);
   IndexSet relevant;
   DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-  LinearAlgebra::distributed::Vector<double> u(dof_handler.locally_owned_dofs(),
-                                               relevant,
-                                               comm);
+  LinearAlgebra::distributed::Vector<double> u(
+      dof_handler.locally_owned_dofs(), relevant, comm);
   Tensor<2, 3> F;
   F[0][0] = 1.2;
   F[0][1] = 0.1;
@@ -89,16 +88,16 @@ main(int argc, char **argv)
   MaterialIdExtremes<3>  extremes;
   extremes.compute(dof_handler, u, materials, QGauss<3>(2));
   for (const auto &[id, e] : extremes.extremes())
-    {
-      const Material &m  = materials.get(id);
-      const double    vm = von_mises_stress(m.cauchy_stress(F, {}));
-      SG_CHECK_CLOSE(e.e_max, expected.e_max(), 1e-10, 1e-12, "e_max");
-      SG_CHECK_CLOSE(e.e_min, expected.e_min(), 1e-10, 1e-12, "e_min");
-      SG_CHECK_CLOSE(e.J_min, expected.J, 1e-10, 0, "J_min");
-      SG_CHECK_CLOSE(e.J_max, expected.J, 1e-10, 0, "J_max");
-      SG_CHECK_CLOSE(e.von_mises_max, vm, 1e-8, 0, "von Mises");
-      SG_CHECK(e.n_points == 32 * 8, "each material has 32 cells x 8 points");
-    }
+  {
+    const Material &m  = materials.get(id);
+    const double    vm = von_mises_stress(m.cauchy_stress(F, {}));
+    SG_CHECK_CLOSE(e.e_max, expected.e_max(), 1e-10, 1e-12, "e_max");
+    SG_CHECK_CLOSE(e.e_min, expected.e_min(), 1e-10, 1e-12, "e_min");
+    SG_CHECK_CLOSE(e.J_min, expected.J, 1e-10, 0, "J_min");
+    SG_CHECK_CLOSE(e.J_max, expected.J, 1e-10, 0, "J_max");
+    SG_CHECK_CLOSE(e.von_mises_max, vm, 1e-8, 0, "von Mises");
+    SG_CHECK(e.n_points == 32 * 8, "each material has 32 cells x 8 points");
+  }
   if (Utilities::MPI::this_mpi_process(comm) == 0)
     extremes.table(materials).write_text(softgrasp_tests::logfile());
 
@@ -119,28 +118,31 @@ main(int argc, char **argv)
     for (unsigned int j = 0; j < 3; ++j)
       inputs.solution_gradients[0][i][j] = F[i][j] - (i == j);
   inputs.evaluation_points = {Point<3>(0.001, 0.001, 0.001)};
-  bool has_skin_cell = false;
+  bool has_skin_cell       = false;
   for (const auto &cell : dof_handler.active_cell_iterators())
     if (cell->is_locally_owned() && cell->material_id() == 1)
-      {
-        inputs.template set_cell<3>(cell);
-        has_skin_cell = true;
-        break;
-      }
+    {
+      inputs.template set_cell<3>(cell);
+      has_skin_cell = true;
+      break;
+    }
   std::vector<Vector<double>> strain_out(1, Vector<double>(7)),
-    stress_out(1, Vector<double>(11));
+      stress_out(1, Vector<double>(11));
   strain.evaluate_vector_field(inputs, strain_out);
   SG_CHECK_CLOSE(strain_out[0][0], expected.e_max(), 1e-12, 0, "e_max output");
   SG_CHECK_CLOSE(strain_out[0][2], expected.e_min(), 1e-12, 0, "e_min output");
   SG_CHECK_CLOSE(strain_out[0][3], expected.J, 1e-12, 0, "J output");
   if (has_skin_cell)
-    {
-      stress.evaluate_vector_field(inputs, stress_out);
-      const auto sigma = materials.get(1).cauchy_stress(F, {});
-      SG_CHECK_CLOSE(stress_out[0][1], sigma[0][1], 1e-12, 0, "sigma_01 output");
-      SG_CHECK_CLOSE(stress_out[0][9], von_mises_stress(sigma), 1e-12, 0,
-                     "von Mises output");
-    }
+  {
+    stress.evaluate_vector_field(inputs, stress_out);
+    const auto sigma = materials.get(1).cauchy_stress(F, {});
+    SG_CHECK_CLOSE(stress_out[0][1], sigma[0][1], 1e-12, 0, "sigma_01 output");
+    SG_CHECK_CLOSE(stress_out[0][9],
+                   von_mises_stress(sigma),
+                   1e-12,
+                   0,
+                   "von Mises output");
+  }
   deallog << "postprocessor outputs equal the analytic values" << std::endl;
   deallog << "OK" << std::endl;
 }

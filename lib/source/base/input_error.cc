@@ -3,6 +3,7 @@
 namespace softgrasp
 {
   InputError::InputError(const std::string &message)
-    : std::runtime_error(message)
-  {}
+      : std::runtime_error(message)
+  {
+  }
 } // namespace softgrasp

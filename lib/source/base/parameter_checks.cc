@@ -1,29 +1,26 @@
+#include <cmath>
 #include <deal.II/base/utilities.h>
-
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
-
-#include <cmath>
 #include <sstream>
 
 namespace softgrasp
 {
   namespace
   {
-    double
-    parse_number(const std::string &text, const std::string &path)
+    double parse_number(const std::string &text, const std::string &path)
     {
       const std::string trimmed  = dealii::Utilities::trim(text);
       std::size_t       consumed = 0;
       double            value    = 0;
       try
-        {
-          value = std::stod(trimmed, &consumed);
-        }
+      {
+        value = std::stod(trimmed, &consumed);
+      }
       catch (const std::exception &)
-        {
-          consumed = 0;
-        }
+      {
+        consumed = 0;
+      }
       if (trimmed.empty() || consumed != trimmed.size() ||
           !std::isfinite(value))
         throw InputError("Parameter '" + path + "' has the value '" + trimmed +
@@ -35,32 +32,29 @@ namespace softgrasp
 
   CheckedSection::CheckedSection(const dealii::ParameterHandler &prm,
                                  std::string                     path)
-    : prm(prm)
-    , path(std::move(path))
-  {}
+      : prm(prm)
+      , path(std::move(path))
+  {
+  }
 
-  void
-  CheckedSection::declare_number(dealii::ParameterHandler &prm,
-                                 const std::string        &name,
-                                 const std::string        &documentation)
+  void CheckedSection::declare_number(dealii::ParameterHandler &prm,
+                                      const std::string        &name,
+                                      const std::string        &documentation)
   {
     prm.declare_entry(name, "", dealii::Patterns::Anything(), documentation);
   }
 
-  std::string
-  CheckedSection::path_of(const std::string &name) const
+  std::string CheckedSection::path_of(const std::string &name) const
   {
     return path.empty() ? name : path + "/" + name;
   }
 
-  bool
-  CheckedSection::is_set(const std::string &name) const
+  bool CheckedSection::is_set(const std::string &name) const
   {
     return !dealii::Utilities::trim(prm.get(name)).empty();
   }
 
-  double
-  CheckedSection::get_number(const std::string &name) const
+  double CheckedSection::get_number(const std::string &name) const
   {
     if (!is_set(name))
       throw InputError("Parameter '" + path_of(name) +
@@ -70,43 +64,41 @@ namespace softgrasp
     return parse_number(prm.get(name), path_of(name));
   }
 
-  double
-  CheckedSection::get_positive(const std::string &name,
-                               const std::string &unit,
-                               const bool         allow_zero) const
+  double CheckedSection::get_positive(const std::string &name,
+                                      const std::string &unit,
+                                      const bool         allow_zero) const
   {
     const double value = get_number(name);
     if (value < 0 || (!allow_zero && value == 0))
-      {
-        std::ostringstream msg;
-        msg << "Parameter '" << path_of(name) << "' is " << value
-            << (unit.empty() ? "" : " " + unit) << ", but it must be "
-            << (allow_zero ? "zero or positive, range [0, inf)" :
-                             "positive, range (0, inf)")
-            << (unit.empty() ? "" : " " + unit)
-            << ". Fix: give its magnitude in SI units.";
-        throw InputError(msg.str());
-      }
+    {
+      std::ostringstream msg;
+      msg << "Parameter '" << path_of(name) << "' is " << value
+          << (unit.empty() ? "" : " " + unit) << ", but it must be "
+          << (allow_zero ? "zero or positive, range [0, inf)"
+                         : "positive, range (0, inf)")
+          << (unit.empty() ? "" : " " + unit)
+          << ". Fix: give its magnitude in SI units.";
+      throw InputError(msg.str());
+    }
     return value;
   }
 
-  double
-  CheckedSection::get_in_range(const std::string &name,
-                               const double       lower,
-                               const double       upper,
-                               const bool         closed_upper,
-                               const std::string &unit) const
+  double CheckedSection::get_in_range(const std::string &name,
+                                      const double       lower,
+                                      const double       upper,
+                                      const bool         closed_upper,
+                                      const std::string &unit) const
   {
     const double value = get_number(name);
     if (value < lower || value > upper || (!closed_upper && value == upper))
-      {
-        std::ostringstream msg;
-        msg << "Parameter '" << path_of(name) << "' is " << value
-            << ", outside its allowed range [" << lower << ", " << upper
-            << (closed_upper ? "]" : ")") << (unit.empty() ? "" : " " + unit)
-            << ". Fix: choose a value in that range.";
-        throw InputError(msg.str());
-      }
+    {
+      std::ostringstream msg;
+      msg << "Parameter '" << path_of(name) << "' is " << value
+          << ", outside its allowed range [" << lower << ", " << upper
+          << (closed_upper ? "]" : ")") << (unit.empty() ? "" : " " + unit)
+          << ". Fix: choose a value in that range.";
+      throw InputError(msg.str());
+    }
     return value;
   }
 

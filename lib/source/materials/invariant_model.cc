@@ -4,11 +4,10 @@ namespace softgrasp
 {
   using namespace dealii;
 
-  void
-  InvariantModel::evaluate(const SymmetricTensor<2, 3> &Cbar,
-                           const StructuralDirections &,
-                           const bool with_second_derivative,
-                           Response  &response) const
+  void InvariantModel::evaluate(const SymmetricTensor<2, 3> &Cbar,
+                                const StructuralDirections &,
+                                const bool with_second_derivative,
+                                Response  &response) const
   {
     const SymmetricTensor<2, 3> I  = unit_symmetric_tensor<3>();
     const double                I1 = trace(Cbar);
@@ -20,9 +19,9 @@ namespace softgrasp
     response.first_derivative      = d.W1 * I + d.W2 * g2;
     if (with_second_derivative)
       response.second_derivative =
-        d.W11 * outer_product(I, I) +
-        d.W12 * (outer_product(I, g2) + outer_product(g2, I)) +
-        d.W22 * outer_product(g2, g2) +
-        d.W2 * (outer_product(I, I) - identity_tensor<3>());
+          d.W11 * outer_product(I, I) +
+          d.W12 * (outer_product(I, g2) + outer_product(g2, I)) +
+          d.W22 * outer_product(g2, g2) +
+          d.W2 * (outer_product(I, I) - identity_tensor<3>());
   }
 } // namespace softgrasp

@@ -2,8 +2,7 @@
 
 namespace softgrasp
 {
-  unsigned int
-  IsochoricModel::n_structural_directions() const
+  unsigned int IsochoricModel::n_structural_directions() const
   {
     return 0;
   }

@@ -1,9 +1,7 @@
+#include <cmath>
 #include <deal.II/physics/transformations.h>
-
 #include <softgrasp/materials/material.h>
 #include <softgrasp/materials/tensor_algebra.h>
-
-#include <cmath>
 #include <sstream>
 
 namespace softgrasp
@@ -11,27 +9,28 @@ namespace softgrasp
   using namespace dealii;
 
   InvertedMaterialState::InvertedMaterialState(const double J)
-    : std::runtime_error("material evaluated at an inverted or non-finite "
-                         "deformation, J = det F = " +
-                         std::to_string(J))
-    , J(J)
-  {}
+      : std::runtime_error("material evaluated at an inverted or non-finite "
+                           "deformation, J = det F = " +
+                           std::to_string(J))
+      , J(J)
+  {
+  }
 
   Material::Material(std::string                     name,
                      std::unique_ptr<IsochoricModel> isochoric_model,
                      const VolumetricEnergy         &volumetric_energy,
                      const double                    density)
-    : material_name(std::move(name))
-    , model(std::move(isochoric_model))
-    , volumetric(volumetric_energy)
-    , rho0(density)
-  {}
+      : material_name(std::move(name))
+      , model(std::move(isochoric_model))
+      , volumetric(volumetric_energy)
+      , rho0(density)
+  {
+  }
 
-  void
-  Material::evaluate_material(const Tensor<2, 3>         &F,
-                              const StructuralDirections &directions,
-                              const bool                  with_tangent,
-                              Response                   &response) const
+  void Material::evaluate_material(const Tensor<2, 3>         &F,
+                                   const StructuralDirections &directions,
+                                   const bool                  with_tangent,
+                                   Response                   &response) const
   {
     const double J = determinant(F);
     if (!(J > 0) || !std::isfinite(J))
@@ -55,45 +54,44 @@ namespace softgrasp
 
     const SymmetricTensor<4, 3> CinvCinv = outer_product(Cinv, Cinv);
     const SymmetricTensor<4, 3> CinvSym =
-      TensorAlgebra::symmetric_product(Cinv, Cinv);
+        TensorAlgebra::symmetric_product(Cinv, Cinv);
     const double d2U = volumetric.second_derivative(J);
 
     // CC_vol = (J^2 U'' + J U') C^-1 (x) C^-1 - 2 J U' C^-1 (.) C^-1
     SymmetricTensor<4, 3> tangent =
-      (J * J * d2U + J * dU) * CinvCinv - 2.0 * J * dU * CinvSym;
+        (J * J * d2U + J * dU) * CinvCinv - 2.0 * J * dU * CinvSym;
 
     // Isochoric: 4 [ P^T H P + X (x) df + df (x) X + (X:C) d2f ], with
-    // P = f II + C (x) df, df = -f/3 C^-1, d2f = f/9 C^-1(x)C^-1 + f/3 C^-1(.)C^-1
+    // P = f II + C (x) df, df = -f/3 C^-1, d2f = f/9 C^-1(x)C^-1 + f/3
+    // C^-1(.)C^-1
     const SymmetricTensor<4, 3> &H   = iso.second_derivative;
     const SymmetricTensor<2, 3>  df  = (-f / 3.0) * Cinv;
     const SymmetricTensor<2, 3>  HC  = H * C;
     const SymmetricTensor<2, 3>  CH  = C * H;
     const double                 CHC = C * HC;
-    const SymmetricTensor<4, 3>  d2f = (f / 9.0) * CinvCinv + (f / 3.0) * CinvSym;
+    const SymmetricTensor<4, 3>  d2f =
+        (f / 9.0) * CinvCinv + (f / 3.0) * CinvSym;
     tangent += 4.0 * (f * f * H + f * outer_product(HC, df) +
                       f * outer_product(df, CH) + CHC * outer_product(df, df) +
                       outer_product(X, df) + outer_product(df, X) + XC * d2f);
     response.tangent = tangent;
   }
 
-  void
-  Material::evaluate_spatial(const Tensor<2, 3>         &F,
-                             const StructuralDirections &directions,
-                             const bool                  with_tangent,
-                             Response                   &response) const
+  void Material::evaluate_spatial(const Tensor<2, 3>         &F,
+                                  const StructuralDirections &directions,
+                                  const bool                  with_tangent,
+                                  Response                   &response) const
   {
     evaluate_material(F, directions, with_tangent, response);
-    response.stress =
-      Physics::Transformations::Contravariant::push_forward(response.stress, F);
+    response.stress = Physics::Transformations::Contravariant::push_forward(
+        response.stress, F);
     if (with_tangent)
-      response.tangent =
-        Physics::Transformations::Contravariant::push_forward(response.tangent,
-                                                              F);
+      response.tangent = Physics::Transformations::Contravariant::push_forward(
+          response.tangent, F);
   }
 
-  double
-  Material::strain_energy(const Tensor<2, 3>         &F,
-                          const StructuralDirections &directions) const
+  double Material::strain_energy(const Tensor<2, 3>         &F,
+                                 const StructuralDirections &directions) const
   {
     const double J = determinant(F);
     if (!(J > 0) || !std::isfinite(J))
@@ -115,9 +113,8 @@ namespace softgrasp
     return response.stress / determinant(F);
   }
 
-  double
-  Material::dilatational_wave_speed(const Tensor<2, 3>         &F,
-                                    const StructuralDirections &directions) const
+  double Material::dilatational_wave_speed(
+      const Tensor<2, 3> &F, const StructuralDirections &directions) const
   {
     Response response;
     evaluate_material(F, directions, true, response);
@@ -128,91 +125,83 @@ namespace softgrasp
     for (int a = -1; a <= 1; ++a)
       for (int b = -1; b <= 1; ++b)
         for (int c = 0; c <= 1; ++c)
-          {
-            // one representative of each +/- pair: 13 lattice directions
-            const Tensor<1, 3> n({double(a), double(b), double(c)});
-            if (n.norm() == 0 || (c == 0 && (b < 0 || (b == 0 && a < 0))))
-              continue;
-            candidates.push_back(n / n.norm());
-          }
+        {
+          // one representative of each +/- pair: 13 lattice directions
+          const Tensor<1, 3> n({double(a), double(b), double(c)});
+          if (n.norm() == 0 || (c == 0 && (b < 0 || (b == 0 && a < 0))))
+            continue;
+          candidates.push_back(n / n.norm());
+        }
     const auto principal = eigenvectors(symmetrize(transpose(F) * F));
     for (const auto &p : principal)
       candidates.push_back(p.second);
 
     double max_eigenvalue = 0;
     for (const Tensor<1, 3> &N : candidates)
-      {
-        // Q_ik = (N.S.N) delta_ik + F_iM F_kP CC_MJPL N_J N_L
-        Tensor<2, 3> B; // B_MP = CC_MJPL N_J N_L
-        for (unsigned int M = 0; M < 3; ++M)
-          for (unsigned int P = 0; P < 3; ++P)
-            for (unsigned int Jx = 0; Jx < 3; ++Jx)
-              for (unsigned int L = 0; L < 3; ++L)
-                B[M][P] += CC[M][Jx][P][L] * N[Jx] * N[L];
-        const Tensor<2, 3> Q =
+    {
+      // Q_ik = (N.S.N) delta_ik + F_iM F_kP CC_MJPL N_J N_L
+      Tensor<2, 3> B; // B_MP = CC_MJPL N_J N_L
+      for (unsigned int M = 0; M < 3; ++M)
+        for (unsigned int P = 0; P < 3; ++P)
+          for (unsigned int Jx = 0; Jx < 3; ++Jx)
+            for (unsigned int L = 0; L < 3; ++L)
+              B[M][P] += CC[M][Jx][P][L] * N[Jx] * N[L];
+      const Tensor<2, 3> Q =
           (N * (S * N)) * unit_symmetric_tensor<3>() + F * B * transpose(F);
-        const auto eig = eigenvalues(symmetrize(Q));
-        max_eigenvalue = std::max(max_eigenvalue, eig[0]);
-      }
+      const auto eig = eigenvalues(symmetrize(Q));
+      max_eigenvalue = std::max(max_eigenvalue, eig[0]);
+    }
     return std::sqrt(max_eigenvalue / rho0);
   }
 
-  double
-  Material::reference_wave_speed() const
+  double Material::reference_wave_speed() const
   {
-    return std::sqrt(
-      (volumetric.bulk_modulus() + 4.0 / 3.0 * model->initial_shear_modulus()) /
-      rho0);
+    return std::sqrt((volumetric.bulk_modulus() +
+                      4.0 / 3.0 * model->initial_shear_modulus()) /
+                     rho0);
   }
 
-  StructuralDirections
-  Material::structural_directions(const Point<3> &X) const
+  StructuralDirections Material::structural_directions(const Point<3> &X) const
   {
     return model->structural_directions(X);
   }
 
-  double
-  Material::density() const
+  double Material::density() const
   {
     return rho0;
   }
 
-  double
-  Material::initial_shear_modulus() const
+  double Material::initial_shear_modulus() const
   {
     return model->initial_shear_modulus();
   }
 
-  double
-  Material::bulk_modulus() const
+  double Material::bulk_modulus() const
   {
     return volumetric.bulk_modulus();
   }
 
-  const std::string &
-  Material::name() const
+  const std::string &Material::name() const
   {
     return material_name;
   }
 
-  std::string
-  Material::summary() const
+  std::string Material::summary() const
   {
     std::ostringstream out;
     out << material_name << ": " << model->summary() << "; "
-        << volumetric.name() << " volumetric energy, kappa = "
-        << volumetric.bulk_modulus() << " Pa; rho_0 = " << rho0 << " kg/m^3";
+        << volumetric.name()
+        << " volumetric energy, kappa = " << volumetric.bulk_modulus()
+        << " Pa; rho_0 = " << rho0 << " kg/m^3";
     return out.str();
   }
 
-  const IsochoricModel &
-  Material::isochoric_model() const
+  const IsochoricModel &Material::isochoric_model() const
   {
     return *model;
   }
 
-  const VolumetricEnergy &
-  Material::volumetric_energy() const
+  const VolumetricEnergy &Material::volumetric_energy() const
   {
     return volumetric;
   }

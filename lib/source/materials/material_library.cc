@@ -1,11 +1,9 @@
 #include <deal.II/base/utilities.h>
-
+#include <fstream>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/materials/material_library.h>
 #include <softgrasp/materials/tissue_presets.h>
-
-#include <fstream>
 #include <sstream>
 
 namespace softgrasp
@@ -14,27 +12,24 @@ namespace softgrasp
 
   namespace
   {
-    std::vector<types::material_id>
-    parse_ids(const std::string &text)
+    std::vector<types::material_id> parse_ids(const std::string &text)
     {
       std::vector<types::material_id> ids;
       for (const std::string &item : Utilities::split_string_list(text, ','))
-        {
-          const int id = Utilities::string_to_int(item);
-          ids.push_back(static_cast<types::material_id>(id));
-        }
+      {
+        const int id = Utilities::string_to_int(item);
+        ids.push_back(static_cast<types::material_id>(id));
+      }
       return ids;
     }
 
-    std::string
-    subsection_name(const types::material_id id)
+    std::string subsection_name(const types::material_id id)
     {
       return "Material " + std::to_string(static_cast<unsigned int>(id));
     }
   } // namespace
 
-  void
-  MaterialLibrary::declare_parameters(ParameterHandler &prm)
+  void MaterialLibrary::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Materials");
     prm.declare_entry("Material ids",
@@ -46,8 +41,7 @@ namespace softgrasp
     prm.leave_subsection();
   }
 
-  void
-  MaterialLibrary::declare_material_parameters(ParameterHandler &prm)
+  void MaterialLibrary::declare_material_parameters(ParameterHandler &prm)
   {
     prm.declare_entry("Name",
                       "",
@@ -64,8 +58,8 @@ namespace softgrasp
                       "",
                       Patterns::Anything(),
                       "Isochoric strain-energy model, one of: " +
-                        IsochoricModelRegistry::names_separated_by(", ") +
-                        ".");
+                          IsochoricModelRegistry::names_separated_by(", ") +
+                          ".");
     CheckedSection::declare_number(prm,
                                    "Density",
                                    "Reference mass density rho_0. Unit: "
@@ -82,21 +76,22 @@ namespace softgrasp
                                    "Bulk modulus kappa. Unit: Pa. Range: (0, "
                                    "inf). Give this or Poisson's ratio.");
     CheckedSection::declare_number(
-      prm,
-      "Poisson's ratio",
-      "Small-strain Poisson's ratio nu, giving kappa = 2 mu_0 (1 + nu) / (3 (1 "
-      "- 2 nu)). Unit: 1. Range: (-1, 0.5). Give this or Bulk modulus.");
+        prm,
+        "Poisson's ratio",
+        "Small-strain Poisson's ratio nu, giving kappa = 2 mu_0 (1 + nu) / (3 "
+        "(1 "
+        "- 2 nu)). Unit: 1. Range: (-1, 0.5). Give this or Bulk modulus.");
     prm.leave_subsection();
     for (const auto &[name, entry] : IsochoricModelRegistry::all())
-      {
-        prm.enter_subsection(name);
-        entry.declare_parameters(prm);
-        prm.leave_subsection();
-      }
+    {
+      prm.enter_subsection(name);
+      entry.declare_parameters(prm);
+      prm.leave_subsection();
+    }
   }
 
-  void
-  MaterialLibrary::parse_input(ParameterHandler &prm, const std::string &filename)
+  void MaterialLibrary::parse_input(ParameterHandler  &prm,
+                                    const std::string &filename)
   {
     std::ifstream file(filename);
     if (!file)
@@ -108,37 +103,35 @@ namespace softgrasp
     parse_input_from_string(prm, text.str());
   }
 
-  void
-  MaterialLibrary::parse_input_from_string(ParameterHandler  &prm,
-                                           const std::string &text)
+  void MaterialLibrary::parse_input_from_string(ParameterHandler  &prm,
+                                                const std::string &text)
   {
     // Pass 1: the material ids (everything else may not be declared yet).
     prm.parse_input_from_string(text, "", /*skip_undefined=*/true);
     prm.enter_subsection("Materials");
     const auto ids = parse_ids(prm.get("Material ids"));
     for (const auto id : ids)
-      {
-        prm.enter_subsection(subsection_name(id));
-        declare_material_parameters(prm);
-        prm.leave_subsection();
-      }
+    {
+      prm.enter_subsection(subsection_name(id));
+      declare_material_parameters(prm);
+      prm.leave_subsection();
+    }
     prm.leave_subsection();
 
     // Pass 2: which presets are selected; apply them.
     prm.parse_input_from_string(text, "", /*skip_undefined=*/true);
     for (const auto id : ids)
-      {
-        prm.enter_subsection("Materials");
-        prm.enter_subsection(subsection_name(id));
-        const std::string preset = prm.get("Preset");
-        prm.leave_subsection();
-        prm.leave_subsection();
-        if (preset != "none")
-          prm.parse_input_from_string("subsection Materials\nsubsection " +
-                                      subsection_name(id) + "\n" +
-                                      TissuePresets::get(preset).parameters +
-                                      "end\nend\n");
-      }
+    {
+      prm.enter_subsection("Materials");
+      prm.enter_subsection(subsection_name(id));
+      const std::string preset = prm.get("Preset");
+      prm.leave_subsection();
+      prm.leave_subsection();
+      if (preset != "none")
+        prm.parse_input_from_string(
+            "subsection Materials\nsubsection " + subsection_name(id) + "\n" +
+            TissuePresets::get(preset).parameters + "end\nend\n");
+    }
 
     // Pass 3: the user's entries, strictly, on top of the presets.
     prm.parse_input_from_string(text, "", /*skip_undefined=*/false);
@@ -157,10 +150,8 @@ namespace softgrasp
                        IsochoricModelRegistry::names_separated_by(", ") +
                        ", or select a Preset (" + TissuePresets::selection() +
                        ").");
-    std::unique_ptr<IsochoricModel> model =
-      IsochoricModelRegistry::create(model_name,
-                                     "material model in '" +
-                                       section.path_of("Model") + "'");
+    std::unique_ptr<IsochoricModel> model = IsochoricModelRegistry::create(
+        model_name, "material model in '" + section.path_of("Model") + "'");
     prm.enter_subsection(model_name);
     model->parse_parameters(prm, path + "/" + model_name);
     prm.leave_subsection();
@@ -172,42 +163,39 @@ namespace softgrasp
     const bool           has_kappa = volumetric.is_set("Bulk modulus");
     const bool           has_nu    = volumetric.is_set("Poisson's ratio");
     if (has_kappa == has_nu)
-      {
-        prm.leave_subsection();
-        throw InputError(
-          "Subsection '" + path + "/Volumetric' must set exactly one of 'Bulk "
+    {
+      prm.leave_subsection();
+      throw InputError(
+          "Subsection '" + path +
+          "/Volumetric' must set exactly one of 'Bulk "
           "modulus' (Pa) and 'Poisson's ratio' (1), but " +
           (has_kappa ? "both are set" : "neither is set") +
           ". Fix: set one and clear the other with 'set <name> =' (a preset "
           "may have set one).");
-      }
+    }
     double kappa = 0;
     if (has_kappa)
       kappa = volumetric.get_positive("Bulk modulus", "Pa");
     else
-      {
-        const double nu =
+    {
+      const double nu =
           volumetric.get_in_range("Poisson's ratio", -1.0, 0.5, false, "");
-        if (nu <= -1.0)
-          throw InputError("Parameter '" +
-                           volumetric.path_of("Poisson's ratio") +
-                           "' must lie in (-1, 0.5). Fix: choose a value in "
-                           "that range.");
-        kappa = 2.0 * model->initial_shear_modulus() * (1.0 + nu) /
-                (3.0 * (1.0 - 2.0 * nu));
-      }
-    const VolumetricEnergy energy(VolumetricEnergy::type_from_name(
-                                    prm.get("Energy")),
-                                  kappa);
+      if (nu <= -1.0)
+        throw InputError("Parameter '" + volumetric.path_of("Poisson's ratio") +
+                         "' must lie in (-1, 0.5). Fix: choose a value in "
+                         "that range.");
+      kappa = 2.0 * model->initial_shear_modulus() * (1.0 + nu) /
+              (3.0 * (1.0 - 2.0 * nu));
+    }
+    const VolumetricEnergy energy(
+        VolumetricEnergy::type_from_name(prm.get("Energy")), kappa);
     prm.leave_subsection();
 
     std::string name = Utilities::trim(prm.get("Name"));
     if (name.empty())
       name = default_name;
-    return std::make_shared<const Material>(name,
-                                            std::move(model),
-                                            energy,
-                                            density);
+    return std::make_shared<const Material>(
+        name, std::move(model), energy, density);
   }
 
   std::shared_ptr<const Material>
@@ -220,37 +208,34 @@ namespace softgrasp
     return create_material(prm, "Preset " + preset_name, preset_name);
   }
 
-  void
-  MaterialLibrary::parse_parameters(ParameterHandler &prm)
+  void MaterialLibrary::parse_parameters(ParameterHandler &prm)
   {
     materials.clear();
     prm.enter_subsection("Materials");
     const auto ids = parse_ids(prm.get("Material ids"));
     for (const auto id : ids)
+    {
+      prm.enter_subsection(subsection_name(id));
+      const std::string preset = prm.get("Preset");
+      const std::string model  = Utilities::trim(prm.get("Model"));
+      try
       {
-        prm.enter_subsection(subsection_name(id));
-        const std::string preset = prm.get("Preset");
-        const std::string model  = Utilities::trim(prm.get("Model"));
-        try
-          {
-            materials[id] =
-              create_material(prm,
-                              "Materials/" + subsection_name(id),
-                              preset != "none" ? preset : model);
-          }
-        catch (...)
-          {
-            prm.leave_subsection();
-            prm.leave_subsection();
-            throw;
-          }
-        prm.leave_subsection();
+        materials[id] = create_material(prm,
+                                        "Materials/" + subsection_name(id),
+                                        preset != "none" ? preset : model);
       }
+      catch (...)
+      {
+        prm.leave_subsection();
+        prm.leave_subsection();
+        throw;
+      }
+      prm.leave_subsection();
+    }
     prm.leave_subsection();
   }
 
-  const Material &
-  MaterialLibrary::get(const types::material_id id) const
+  const Material &MaterialLibrary::get(const types::material_id id) const
   {
     return *get_shared(id);
   }
@@ -260,24 +245,23 @@ namespace softgrasp
   {
     const auto it = materials.find(id);
     if (it == materials.end())
-      {
-        std::string ids;
-        for (const auto &[known, material] : materials)
-          ids += (ids.empty() ? "" : ", ") +
-                 std::to_string(static_cast<unsigned int>(known));
-        throw InputError("The mesh has material id " +
-                         std::to_string(static_cast<unsigned int>(id)) +
-                         ", but the parameter file configures materials only "
-                         "for ids {" +
-                         ids +
-                         "}. Fix: add the id to 'Materials/Material ids' and "
-                         "give it a 'Material <id>' subsection.");
-      }
+    {
+      std::string ids;
+      for (const auto &[known, material] : materials)
+        ids += (ids.empty() ? "" : ", ") +
+               std::to_string(static_cast<unsigned int>(known));
+      throw InputError("The mesh has material id " +
+                       std::to_string(static_cast<unsigned int>(id)) +
+                       ", but the parameter file configures materials only "
+                       "for ids {" +
+                       ids +
+                       "}. Fix: add the id to 'Materials/Material ids' and "
+                       "give it a 'Material <id>' subsection.");
+    }
     return it->second;
   }
 
-  std::vector<types::material_id>
-  MaterialLibrary::material_ids() const
+  std::vector<types::material_id> MaterialLibrary::material_ids() const
   {
     std::vector<types::material_id> ids;
     for (const auto &[id, material] : materials)
@@ -285,9 +269,8 @@ namespace softgrasp
     return ids;
   }
 
-  void
-  MaterialLibrary::set(const types::material_id        id,
-                       std::shared_ptr<const Material> material)
+  void MaterialLibrary::set(const types::material_id        id,
+                            std::shared_ptr<const Material> material)
   {
     materials[id] = std::move(material);
   }

@@ -3,32 +3,28 @@
 
 namespace softgrasp
 {
-  void
-  MooneyRivlin::declare_parameters(dealii::ParameterHandler &prm)
+  void MooneyRivlin::declare_parameters(dealii::ParameterHandler &prm)
   {
     CheckedSection::declare_number(
-      prm, "C10", "Coefficient of (I1bar - 3). Unit: Pa. Range: (0, inf).");
+        prm, "C10", "Coefficient of (I1bar - 3). Unit: Pa. Range: (0, inf).");
     CheckedSection::declare_number(
-      prm, "C01", "Coefficient of (I2bar - 3). Unit: Pa. Range: [0, inf).");
+        prm, "C01", "Coefficient of (I2bar - 3). Unit: Pa. Range: [0, inf).");
   }
 
-  void
-  MooneyRivlin::parse_parameters(dealii::ParameterHandler &prm,
-                                 const std::string        &path)
+  void MooneyRivlin::parse_parameters(dealii::ParameterHandler &prm,
+                                      const std::string        &path)
   {
     const CheckedSection section(prm, path);
     c10 = section.get_positive("C10", "Pa");
     c01 = section.get_positive("C01", "Pa", /*allow_zero=*/true);
   }
 
-  double
-  MooneyRivlin::initial_shear_modulus() const
+  double MooneyRivlin::initial_shear_modulus() const
   {
     return 2.0 * (c10 + c01);
   }
 
-  std::string
-  MooneyRivlin::summary() const
+  std::string MooneyRivlin::summary() const
   {
     return "Mooney-Rivlin, C10 = " + std::to_string(c10) +
            " Pa, C01 = " + std::to_string(c01) + " Pa";
@@ -44,7 +40,8 @@ namespace softgrasp
     return d;
   }
 
-  SOFTGRASP_REGISTER_ISOCHORIC_MODEL(MooneyRivlin,
-                                     "Mooney-Rivlin",
-                                     "Psi_iso = C10 (I1bar - 3) + C01 (I2bar - 3)")
+  SOFTGRASP_REGISTER_ISOCHORIC_MODEL(
+      MooneyRivlin,
+      "Mooney-Rivlin",
+      "Psi_iso = C10 (I1bar - 3) + C01 (I2bar - 3)")
 } // namespace softgrasp

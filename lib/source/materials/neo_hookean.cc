@@ -3,8 +3,7 @@
 
 namespace softgrasp
 {
-  void
-  NeoHookean::declare_parameters(dealii::ParameterHandler &prm)
+  void NeoHookean::declare_parameters(dealii::ParameterHandler &prm)
   {
     CheckedSection::declare_number(prm,
                                    "Shear modulus",
@@ -12,21 +11,18 @@ namespace softgrasp
                                    "(I1bar - 3). Unit: Pa. Range: (0, inf).");
   }
 
-  void
-  NeoHookean::parse_parameters(dealii::ParameterHandler &prm,
-                               const std::string        &path)
+  void NeoHookean::parse_parameters(dealii::ParameterHandler &prm,
+                                    const std::string        &path)
   {
     mu = CheckedSection(prm, path).get_positive("Shear modulus", "Pa");
   }
 
-  double
-  NeoHookean::initial_shear_modulus() const
+  double NeoHookean::initial_shear_modulus() const
   {
     return mu;
   }
 
-  std::string
-  NeoHookean::summary() const
+  std::string NeoHookean::summary() const
   {
     return "neo-Hookean, mu = " + std::to_string(mu) + " Pa";
   }

@@ -5,14 +5,14 @@ namespace softgrasp
 {
   // Parameter values and their sources are tabulated in doc/materials.md;
   // keep the two in step.
-  const std::vector<TissuePresets::Preset> &
-  TissuePresets::all()
+  const std::vector<TissuePresets::Preset> &TissuePresets::all()
   {
     static const std::vector<Preset> presets = {
-      {"skin",
-       "one-term Ogden fit of pig skin, mu = 0.4 MPa, alpha = 12 (Shergold et "
-       "al. 2006); rho from IT'IS v4.1",
-       R"(set Model = Ogden
+        {"skin",
+         "one-term Ogden fit of pig skin, mu = 0.4 MPa, alpha = 12 (Shergold "
+         "et "
+         "al. 2006); rho from IT'IS v4.1",
+         R"(set Model = Ogden
 set Density = 1109
 subsection Volumetric
   set Energy = Simo-Taylor
@@ -23,10 +23,11 @@ subsection Ogden
   set Exponents = 12
 end
 )"},
-      {"subcutaneous fat",
-       "neo-Hookean, mu = 0.53 kPa, porcine subdermal fat (Sims et al. 2010); "
-       "rho from IT'IS v4.1",
-       R"(set Model = neo-Hookean
+        {"subcutaneous fat",
+         "neo-Hookean, mu = 0.53 kPa, porcine subdermal fat (Sims et al. "
+         "2010); "
+         "rho from IT'IS v4.1",
+         R"(set Model = neo-Hookean
 set Density = 911
 subsection Volumetric
   set Energy = Simo-Taylor
@@ -36,11 +37,11 @@ subsection neo-Hookean
   set Shear modulus = 530
 end
 )"},
-      {"skeletal muscle",
-       "HGO, one fibre family along x; mu and k1 from the cross- and "
-       "along-fibre moduli 22.4 and 447 kPa (Morrow et al. 2010); rho from "
-       "IT'IS v4.1",
-       R"(set Model = Holzapfel-Gasser-Ogden
+        {"skeletal muscle",
+         "HGO, one fibre family along x; mu and k1 from the cross- and "
+         "along-fibre moduli 22.4 and 447 kPa (Morrow et al. 2010); rho from "
+         "IT'IS v4.1",
+         R"(set Model = Holzapfel-Gasser-Ogden
 set Density = 1090
 subsection Volumetric
   set Energy = Simo-Taylor
@@ -57,10 +58,10 @@ subsection Holzapfel-Gasser-Ogden
   end
 end
 )"},
-      {"fascia",
-       "HGO, one fibre family along x; k1 from the longitudinal modulus "
-       "397 MPa of fascia lata (Butler et al. 1984), matrix as ligament",
-       R"(set Model = Holzapfel-Gasser-Ogden
+        {"fascia",
+         "HGO, one fibre family along x; k1 from the longitudinal modulus "
+         "397 MPa of fascia lata (Butler et al. 1984), matrix as ligament",
+         R"(set Model = Holzapfel-Gasser-Ogden
 set Density = 1142
 subsection Volumetric
   set Energy = Simo-Taylor
@@ -77,11 +78,11 @@ subsection Holzapfel-Gasser-Ogden
   end
 end
 )"},
-      {"ligament",
-       "HGO, one fibre family along x; mu and k1 from the transverse and "
-       "longitudinal moduli 11.0 and 332.2 MPa of human MCL (Quapp and Weiss "
-       "1998); rho from IT'IS v4.1",
-       R"(set Model = Holzapfel-Gasser-Ogden
+        {"ligament",
+         "HGO, one fibre family along x; mu and k1 from the transverse and "
+         "longitudinal moduli 11.0 and 332.2 MPa of human MCL (Quapp and Weiss "
+         "1998); rho from IT'IS v4.1",
+         R"(set Model = Holzapfel-Gasser-Ogden
 set Density = 1142
 subsection Volumetric
   set Energy = Simo-Taylor
@@ -98,10 +99,10 @@ subsection Holzapfel-Gasser-Ogden
   end
 end
 )"},
-      {"natural rubber",
-       "three-term Ogden fit of Treloar's data (Ogden 1972), mu_0 = 422.5 "
-       "kPa; kappa = 2 GPa and rho = 930 kg/m^3 (Gent 2012)",
-       R"(set Model = Ogden
+        {"natural rubber",
+         "three-term Ogden fit of Treloar's data (Ogden 1972), mu_0 = 422.5 "
+         "kPa; kappa = 2 GPa and rho = 930 kg/m^3 (Gent 2012)",
+         R"(set Model = Ogden
 set Density = 930
 subsection Volumetric
   set Energy = Simo-Taylor
@@ -112,10 +113,10 @@ subsection Ogden
   set Exponents = 1.3, 5.0, -2.0
 end
 )"},
-      {"cortical bone",
-       "stiff neo-Hookean solid, E = 17.9 GPa (Reilly and Burstein 1975), "
-       "nu = 0.3; rho from IT'IS v4.1",
-       R"(set Model = neo-Hookean
+        {"cortical bone",
+         "stiff neo-Hookean solid, E = 17.9 GPa (Reilly and Burstein 1975), "
+         "nu = 0.3; rho from IT'IS v4.1",
+         R"(set Model = neo-Hookean
 set Density = 1908
 subsection Volumetric
   set Energy = Simo-Taylor
@@ -128,8 +129,7 @@ end
     return presets;
   }
 
-  const TissuePresets::Preset &
-  TissuePresets::get(const std::string &name)
+  const TissuePresets::Preset &TissuePresets::get(const std::string &name)
   {
     for (const Preset &preset : all())
       if (preset.name == name)
@@ -141,8 +141,7 @@ end
                      "'. Valid names are: " + names + ".");
   }
 
-  std::string
-  TissuePresets::selection()
+  std::string TissuePresets::selection()
   {
     std::string out = "none";
     for (const Preset &preset : all())

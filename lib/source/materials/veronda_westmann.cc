@@ -1,36 +1,31 @@
+#include <cmath>
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/materials/veronda_westmann.h>
 
-#include <cmath>
-
 namespace softgrasp
 {
-  void
-  VerondaWestmann::declare_parameters(dealii::ParameterHandler &prm)
+  void VerondaWestmann::declare_parameters(dealii::ParameterHandler &prm)
   {
     CheckedSection::declare_number(
-      prm, "C1", "Stress scale C1. Unit: Pa. Range: (0, inf).");
+        prm, "C1", "Stress scale C1. Unit: Pa. Range: (0, inf).");
     CheckedSection::declare_number(
-      prm, "C2", "Exponential stiffening C2. Unit: 1. Range: (0, inf).");
+        prm, "C2", "Exponential stiffening C2. Unit: 1. Range: (0, inf).");
   }
 
-  void
-  VerondaWestmann::parse_parameters(dealii::ParameterHandler &prm,
-                                    const std::string        &path)
+  void VerondaWestmann::parse_parameters(dealii::ParameterHandler &prm,
+                                         const std::string        &path)
   {
     const CheckedSection section(prm, path);
     c1 = section.get_positive("C1", "Pa");
     c2 = section.get_positive("C2", "");
   }
 
-  double
-  VerondaWestmann::initial_shear_modulus() const
+  double VerondaWestmann::initial_shear_modulus() const
   {
     return c1 * c2;
   }
 
-  std::string
-  VerondaWestmann::summary() const
+  std::string VerondaWestmann::summary() const
   {
     return "Veronda-Westmann, C1 = " + std::to_string(c1) +
            " Pa, C2 = " + std::to_string(c2);
@@ -49,7 +44,7 @@ namespace softgrasp
   }
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(
-    VerondaWestmann,
-    "Veronda-Westmann",
-    "Psi_iso = C1 (exp(C2 (I1bar - 3)) - 1) - C1 C2/2 (I2bar - 3)")
+      VerondaWestmann,
+      "Veronda-Westmann",
+      "Psi_iso = C1 (exp(C2 (I1bar - 3)) - 1) - C1 C2/2 (I2bar - 3)")
 } // namespace softgrasp

@@ -1,8 +1,7 @@
-#include <softgrasp/base/input_error.h>
-#include <softgrasp/materials/volumetric_energy.h>
-
 #include <array>
 #include <cmath>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/materials/volumetric_energy.h>
 #include <utility>
 
 namespace softgrasp
@@ -10,18 +9,18 @@ namespace softgrasp
   namespace
   {
     const std::array<std::pair<VolumetricEnergy::Type, const char *>, 3>
-      type_names = {{{VolumetricEnergy::Type::quadratic, "quadratic"},
-                     {VolumetricEnergy::Type::logarithmic, "logarithmic"},
-                     {VolumetricEnergy::Type::simo_taylor, "Simo-Taylor"}}};
+        type_names = {{{VolumetricEnergy::Type::quadratic, "quadratic"},
+                       {VolumetricEnergy::Type::logarithmic, "logarithmic"},
+                       {VolumetricEnergy::Type::simo_taylor, "Simo-Taylor"}}};
   }
 
   VolumetricEnergy::VolumetricEnergy(const Type type, const double bulk_modulus)
-    : type(type)
-    , kappa(bulk_modulus)
-  {}
+      : type(type)
+      , kappa(bulk_modulus)
+  {
+  }
 
-  std::string
-  VolumetricEnergy::names()
+  std::string VolumetricEnergy::names()
   {
     std::string out;
     for (const auto &entry : type_names)
@@ -39,8 +38,7 @@ namespace softgrasp
                      "'. Valid names are: " + names() + ".");
   }
 
-  std::string
-  VolumetricEnergy::name() const
+  std::string VolumetricEnergy::name() const
   {
     for (const auto &entry : type_names)
       if (entry.first == type)
@@ -48,54 +46,50 @@ namespace softgrasp
     return "";
   }
 
-  double
-  VolumetricEnergy::bulk_modulus() const
+  double VolumetricEnergy::bulk_modulus() const
   {
     return kappa;
   }
 
-  double
-  VolumetricEnergy::energy(const double J) const
+  double VolumetricEnergy::energy(const double J) const
   {
     switch (type)
-      {
-        case Type::quadratic:
-          return 0.5 * kappa * (J - 1.0) * (J - 1.0);
-        case Type::logarithmic:
-          return 0.5 * kappa * std::log(J) * std::log(J);
-        case Type::simo_taylor:
-          return 0.25 * kappa * (J * J - 1.0 - 2.0 * std::log(J));
-      }
+    {
+    case Type::quadratic:
+      return 0.5 * kappa * (J - 1.0) * (J - 1.0);
+    case Type::logarithmic:
+      return 0.5 * kappa * std::log(J) * std::log(J);
+    case Type::simo_taylor:
+      return 0.25 * kappa * (J * J - 1.0 - 2.0 * std::log(J));
+    }
     return 0;
   }
 
-  double
-  VolumetricEnergy::first_derivative(const double J) const
+  double VolumetricEnergy::first_derivative(const double J) const
   {
     switch (type)
-      {
-        case Type::quadratic:
-          return kappa * (J - 1.0);
-        case Type::logarithmic:
-          return kappa * std::log(J) / J;
-        case Type::simo_taylor:
-          return 0.5 * kappa * (J - 1.0 / J);
-      }
+    {
+    case Type::quadratic:
+      return kappa * (J - 1.0);
+    case Type::logarithmic:
+      return kappa * std::log(J) / J;
+    case Type::simo_taylor:
+      return 0.5 * kappa * (J - 1.0 / J);
+    }
     return 0;
   }
 
-  double
-  VolumetricEnergy::second_derivative(const double J) const
+  double VolumetricEnergy::second_derivative(const double J) const
   {
     switch (type)
-      {
-        case Type::quadratic:
-          return kappa;
-        case Type::logarithmic:
-          return kappa * (1.0 - std::log(J)) / (J * J);
-        case Type::simo_taylor:
-          return 0.5 * kappa * (1.0 + 1.0 / (J * J));
-      }
+    {
+    case Type::quadratic:
+      return kappa;
+    case Type::logarithmic:
+      return kappa * (1.0 - std::log(J)) / (J * J);
+    case Type::simo_taylor:
+      return 0.5 * kappa * (1.0 + 1.0 / (J * J));
+    }
     return 0;
   }
 } // namespace softgrasp

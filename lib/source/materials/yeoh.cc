@@ -1,41 +1,38 @@
+#include <cmath>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/materials/yeoh.h>
 
-#include <cmath>
-
 namespace softgrasp
 {
-  void
-  Yeoh::declare_parameters(dealii::ParameterHandler &prm)
+  void Yeoh::declare_parameters(dealii::ParameterHandler &prm)
   {
     CheckedSection::declare_number(
-      prm,
-      "Coefficients",
-      "Comma-separated C10, C20, C30, ... of Psi_iso = sum_i Ci0 (I1bar - "
-      "3)^i. Unit: Pa. Range: C10 in (0, inf); others any sign.");
+        prm,
+        "Coefficients",
+        "Comma-separated C10, C20, C30, ... of Psi_iso = sum_i Ci0 (I1bar - "
+        "3)^i. Unit: Pa. Range: C10 in (0, inf); others any sign.");
   }
 
-  void
-  Yeoh::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
+  void Yeoh::parse_parameters(dealii::ParameterHandler &prm,
+                              const std::string        &path)
   {
     const CheckedSection section(prm, path);
     coefficients = section.get_number_list("Coefficients");
     if (coefficients[0] <= 0)
-      throw InputError("Parameter '" + section.path_of("Coefficients") +
-                       "' starts with C10 = " + std::to_string(coefficients[0]) +
-                       " Pa, but C10 must be positive, range (0, inf) Pa. "
-                       "Fix: give C10 = mu_0/2 > 0 first.");
+      throw InputError(
+          "Parameter '" + section.path_of("Coefficients") +
+          "' starts with C10 = " + std::to_string(coefficients[0]) +
+          " Pa, but C10 must be positive, range (0, inf) Pa. "
+          "Fix: give C10 = mu_0/2 > 0 first.");
   }
 
-  double
-  Yeoh::initial_shear_modulus() const
+  double Yeoh::initial_shear_modulus() const
   {
     return 2.0 * coefficients[0];
   }
 
-  std::string
-  Yeoh::summary() const
+  std::string Yeoh::summary() const
   {
     std::string out = "Yeoh, C =";
     for (const double c : coefficients)
@@ -43,19 +40,19 @@ namespace softgrasp
     return out + " Pa";
   }
 
-  InvariantModel::Derivatives
-  Yeoh::invariant_derivatives(const double I1, const double) const
+  InvariantModel::Derivatives Yeoh::invariant_derivatives(const double I1,
+                                                          const double) const
   {
     Derivatives  d;
     const double x = I1 - 3.0;
     for (unsigned int i = 1; i <= coefficients.size(); ++i)
-      {
-        const double c = coefficients[i - 1];
-        d.W += c * std::pow(x, i);
-        d.W1 += c * i * std::pow(x, i - 1.0);
-        if (i >= 2)
-          d.W11 += c * i * (i - 1.0) * std::pow(x, i - 2.0);
-      }
+    {
+      const double c = coefficients[i - 1];
+      d.W += c * std::pow(x, i);
+      d.W1 += c * i * std::pow(x, i - 1.0);
+      if (i >= 2)
+        d.W11 += c * i * (i - 1.0) * std::pow(x, i - 2.0);
+    }
     return d;
   }
 

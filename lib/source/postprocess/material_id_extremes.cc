@@ -1,15 +1,13 @@
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
-
+#include <limits>
 #include <softgrasp/base/plane_strain.h>
 #include <softgrasp/postprocess/material_id_extremes.h>
 #include <softgrasp/postprocess/principal_strains.h>
-
-#include <limits>
 #include <utility>
 
 namespace softgrasp
@@ -18,12 +16,11 @@ namespace softgrasp
 
   template <int dim>
   template <typename VectorType>
-  void
-  MaterialIdExtremes<dim>::compute(const DoFHandler<dim>  &dof_handler,
-                                   const VectorType       &solution,
-                                   const MaterialLibrary  &materials,
-                                   const Quadrature<dim>  &quadrature,
-                                   const unsigned int      first_component)
+  void MaterialIdExtremes<dim>::compute(const DoFHandler<dim> &dof_handler,
+                                        const VectorType      &solution,
+                                        const MaterialLibrary &materials,
+                                        const Quadrature<dim> &quadrature,
+                                        const unsigned int     first_component)
   {
     constexpr double inf = std::numeric_limits<double>::infinity();
     const auto       ids = materials.material_ids();
@@ -31,37 +28,37 @@ namespace softgrasp
     std::vector<double>       maxima(5 * ids.size(), -inf);
     std::vector<unsigned int> counts(ids.size(), 0);
 
-    FEValues<dim> fe_values(dof_handler.get_fe(),
+    FEValues<dim>                              fe_values(dof_handler.get_fe(),
                             quadrature,
                             update_gradients | update_quadrature_points);
-    const FEValuesExtractors::Vector        displacement(first_component);
-    std::vector<Tensor<2, dim>>             grad_u(quadrature.size());
+    const FEValuesExtractors::Vector           displacement(first_component);
+    std::vector<Tensor<2, dim>>                grad_u(quadrature.size());
     std::map<types::material_id, unsigned int> index;
     for (unsigned int k = 0; k < ids.size(); ++k)
       index[ids[k]] = k;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_gradients(solution, grad_u);
+        const Material    &material = materials.get(cell->material_id());
+        const unsigned int k        = index.at(cell->material_id());
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
         {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_gradients(solution, grad_u);
-          const Material    &material = materials.get(cell->material_id());
-          const unsigned int k        = index.at(cell->material_id());
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              const Tensor<2, 3> F = PlaneStrain::to_3d(
-                Tensor<2, dim>(unit_symmetric_tensor<dim>()) + grad_u[q]);
-              const PrincipalStrains p = PrincipalStrains::compute(F);
-              const double           vm = von_mises_stress(material.cauchy_stress(
-                F,
-                material.structural_directions(
+          const Tensor<2, 3> F = PlaneStrain::to_3d(
+              Tensor<2, dim>(unit_symmetric_tensor<dim>()) + grad_u[q]);
+          const PrincipalStrains p  = PrincipalStrains::compute(F);
+          const double           vm = von_mises_stress(material.cauchy_stress(
+              F,
+              material.structural_directions(
                   PlaneStrain::to_3d(fe_values.quadrature_point(q)))));
-              const double local[5] = {p.e_max(), -p.e_min(), -p.J, p.J, vm};
-              for (unsigned int m = 0; m < 5; ++m)
-                maxima[5 * k + m] = std::max(maxima[5 * k + m], local[m]);
-              ++counts[k];
-            }
+          const double local[5]     = {p.e_max(), -p.e_min(), -p.J, p.J, vm};
+          for (unsigned int m = 0; m < 5; ++m)
+            maxima[5 * k + m] = std::max(maxima[5 * k + m], local[m]);
+          ++counts[k];
         }
+      }
 
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     {
@@ -79,21 +76,20 @@ namespace softgrasp
     values.clear();
     for (unsigned int k = 0; k < ids.size(); ++k)
       if (counts[k] > 0)
-        {
-          Extremes &e     = values[ids[k]];
-          e.e_max         = maxima[5 * k];
-          e.e_min         = -maxima[5 * k + 1];
-          e.J_min         = -maxima[5 * k + 2];
-          e.J_max         = maxima[5 * k + 3];
-          e.von_mises_max = maxima[5 * k + 4];
-          e.n_points      = counts[k];
-        }
+      {
+        Extremes &e     = values[ids[k]];
+        e.e_max         = maxima[5 * k];
+        e.e_min         = -maxima[5 * k + 1];
+        e.J_min         = -maxima[5 * k + 2];
+        e.J_max         = maxima[5 * k + 3];
+        e.von_mises_max = maxima[5 * k + 4];
+        e.n_points      = counts[k];
+      }
   }
 
   template <int dim>
-  const std::map<types::material_id,
-                 typename MaterialIdExtremes<dim>::Extremes> &
-  MaterialIdExtremes<dim>::extremes() const
+  const std::map<types::material_id, typename MaterialIdExtremes<dim>::Extremes>
+      &MaterialIdExtremes<dim>::extremes() const
   {
     return values;
   }
@@ -104,34 +100,34 @@ namespace softgrasp
   {
     TableHandler table;
     for (const auto &[id, e] : values)
-      {
-        table.add_value("material_id", static_cast<unsigned int>(id));
-        table.add_value("name", materials.get(id).name());
-        table.add_value("e_max", e.e_max);
-        table.add_value("e_min", e.e_min);
-        table.add_value("J_min", e.J_min);
-        table.add_value("J_max", e.J_max);
-        table.add_value("von_Mises_max_Pa", e.von_mises_max);
-      }
+    {
+      table.add_value("material_id", static_cast<unsigned int>(id));
+      table.add_value("name", materials.get(id).name());
+      table.add_value("e_max", e.e_max);
+      table.add_value("e_min", e.e_min);
+      table.add_value("J_min", e.J_min);
+      table.add_value("J_max", e.J_max);
+      table.add_value("von_Mises_max_Pa", e.von_mises_max);
+    }
     for (const char *column :
          {"e_max", "e_min", "J_min", "J_max", "von_Mises_max_Pa"})
-      {
-        table.set_scientific(column, true);
-        table.set_precision(column, 4);
-      }
+    {
+      table.set_scientific(column, true);
+      table.set_precision(column, 4);
+    }
     return table;
   }
 
   template class MaterialIdExtremes<2>;
   template class MaterialIdExtremes<3>;
 
-#define SOFTGRASP_INSTANTIATE(dim, VectorType)                             \
-  template void MaterialIdExtremes<dim>::compute<VectorType>(              \
-    const DoFHandler<dim> &,                                               \
-    const VectorType &,                                                    \
-    const MaterialLibrary &,                                               \
-    const Quadrature<dim> &,                                               \
-    const unsigned int);
+#define SOFTGRASP_INSTANTIATE(dim, VectorType)                                 \
+  template void MaterialIdExtremes<dim>::compute<VectorType>(                  \
+      const DoFHandler<dim> &,                                                 \
+      const VectorType &,                                                      \
+      const MaterialLibrary &,                                                 \
+      const Quadrature<dim> &,                                                 \
+      const unsigned int);
   SOFTGRASP_INSTANTIATE(2, Vector<double>)
   SOFTGRASP_INSTANTIATE(3, Vector<double>)
   SOFTGRASP_INSTANTIATE(2, LinearAlgebra::distributed::Vector<double>)

@@ -2,7 +2,6 @@
 #define softgrasp_base_parameter_checks_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <string>
 #include <vector>
 
@@ -24,40 +23,33 @@ namespace softgrasp
     CheckedSection(const dealii::ParameterHandler &prm, std::string path);
 
     /// Declare a number entry with an empty default (set it or leave unset).
-    static void
-    declare_number(dealii::ParameterHandler &prm,
-                   const std::string        &name,
-                   const std::string        &documentation);
+    static void declare_number(dealii::ParameterHandler &prm,
+                               const std::string        &name,
+                               const std::string        &documentation);
 
     /// Full path of entry @p name, for messages.
-    std::string
-    path_of(const std::string &name) const;
+    std::string path_of(const std::string &name) const;
 
     /// True if the entry has a non-empty value.
-    bool
-    is_set(const std::string &name) const;
+    bool is_set(const std::string &name) const;
 
     /// A finite number; throws if unset or malformed.
-    double
-    get_number(const std::string &name) const;
+    double get_number(const std::string &name) const;
 
     /// A number > 0 (or >= 0 if @p allow_zero); @p unit appears in messages.
-    double
-    get_positive(const std::string &name,
-                 const std::string &unit,
-                 const bool         allow_zero = false) const;
+    double get_positive(const std::string &name,
+                        const std::string &unit,
+                        const bool         allow_zero = false) const;
 
     /// A number in [lower, upper) or, if @p closed_upper, [lower, upper].
-    double
-    get_in_range(const std::string &name,
-                 const double       lower,
-                 const double       upper,
-                 const bool         closed_upper,
-                 const std::string &unit) const;
+    double get_in_range(const std::string &name,
+                        const double       lower,
+                        const double       upper,
+                        const bool         closed_upper,
+                        const std::string &unit) const;
 
     /// A non-empty comma-separated list of finite numbers.
-    std::vector<double>
-    get_number_list(const std::string &name) const;
+    std::vector<double> get_number_list(const std::string &name) const;
 
     const dealii::ParameterHandler &prm;
     const std::string               path;

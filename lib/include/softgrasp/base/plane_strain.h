@@ -13,8 +13,7 @@ namespace softgrasp
   namespace PlaneStrain
   {
     template <int dim>
-    inline dealii::Tensor<2, 3>
-    to_3d(const dealii::Tensor<2, dim> &F)
+    inline dealii::Tensor<2, 3> to_3d(const dealii::Tensor<2, dim> &F)
     {
       static_assert(dim == 2 || dim == 3, "dim must be 2 or 3");
       dealii::Tensor<2, 3> F3;
@@ -27,8 +26,7 @@ namespace softgrasp
     }
 
     template <int dim>
-    inline dealii::Point<3>
-    to_3d(const dealii::Point<dim> &p)
+    inline dealii::Point<3> to_3d(const dealii::Point<dim> &p)
     {
       dealii::Point<3> p3;
       for (unsigned int i = 0; i < dim; ++i)

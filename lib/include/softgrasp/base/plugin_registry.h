@@ -2,12 +2,10 @@
 #define softgrasp_base_plugin_registry_h
 
 #include <deal.II/base/parameter_handler.h>
-
-#include <softgrasp/base/input_error.h>
-
 #include <functional>
 #include <map>
 #include <memory>
+#include <softgrasp/base/input_error.h>
 #include <string>
 
 namespace softgrasp
@@ -23,8 +21,7 @@ namespace softgrasp
    *   static void declare_parameters(ParameterHandler &) per implementation,
    * passed at registration.
    */
-  template <typename Interface>
-  class PluginRegistry
+  template <typename Interface> class PluginRegistry
   {
   public:
     struct Entry
@@ -41,14 +38,14 @@ namespace softgrasp
                     std::function<void(dealii::ParameterHandler &)> declare,
                     std::function<std::unique_ptr<Interface>()>     create)
     {
-      entries().emplace(name,
-                        Entry{description, std::move(declare), std::move(create)});
+      entries().emplace(
+          name, Entry{description, std::move(declare), std::move(create)});
       return true;
     }
 
     /// A new default-constructed instance of plugin @p name.
-    static std::unique_ptr<Interface>
-    create(const std::string &name, const std::string &what)
+    static std::unique_ptr<Interface> create(const std::string &name,
+                                             const std::string &what)
     {
       const auto it = entries().find(name);
       if (it == entries().end())
@@ -59,8 +56,7 @@ namespace softgrasp
     }
 
     /// All registered names joined by @p separator, in alphabetical order.
-    static std::string
-    names_separated_by(const std::string &separator)
+    static std::string names_separated_by(const std::string &separator)
     {
       std::string out;
       for (const auto &[name, entry] : entries())
@@ -69,16 +65,14 @@ namespace softgrasp
     }
 
     /// The map of all registered plugins, sorted by name.
-    static const std::map<std::string, Entry> &
-    all()
+    static const std::map<std::string, Entry> &all()
     {
       return entries();
     }
 
   private:
     // Function-local static: safe against static initialization order.
-    static std::map<std::string, Entry> &
-    entries()
+    static std::map<std::string, Entry> &entries()
     {
       static std::map<std::string, Entry> map;
       return map;
@@ -90,17 +84,16 @@ namespace softgrasp
  * Register class @p Class (derived from @p Interface, default-constructible,
  * with a static declare_parameters(ParameterHandler&)) under @p name.
  */
-#define SOFTGRASP_REGISTER_PLUGIN(Interface, Class, name, description)       \
-  namespace                                                                 \
-  {                                                                         \
-    [[maybe_unused]] const bool softgrasp_registered_##Class =              \
-      ::softgrasp::PluginRegistry<Interface>::register_plugin(              \
-        name,                                                               \
-        description,                                                        \
-        &Class::declare_parameters,                                         \
-        []() -> std::unique_ptr<Interface> {                                \
-          return std::make_unique<Class>();                                 \
-        });                                                                 \
+#define SOFTGRASP_REGISTER_PLUGIN(Interface, Class, name, description)         \
+  namespace                                                                    \
+  {                                                                            \
+    [[maybe_unused]] const bool softgrasp_registered_##Class =                 \
+        ::softgrasp::PluginRegistry<Interface>::register_plugin(               \
+            name,                                                              \
+            description,                                                       \
+            &Class::declare_parameters,                                        \
+            []() -> std::unique_ptr<Interface>                                 \
+            { return std::make_unique<Class>(); });                            \
   }
 
 #endif

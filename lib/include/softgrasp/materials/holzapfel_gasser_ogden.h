@@ -1,12 +1,10 @@
 #ifndef softgrasp_materials_holzapfel_gasser_ogden_h
 #define softgrasp_materials_holzapfel_gasser_ogden_h
 
-#include <deal.II/base/parsed_function.h>
-
-#include <softgrasp/materials/isochoric_model.h>
-
 #include <array>
+#include <deal.II/base/parsed_function.h>
 #include <memory>
+#include <softgrasp/materials/isochoric_model.h>
 
 namespace softgrasp
 {
@@ -35,24 +33,18 @@ namespace softgrasp
     HolzapfelGasserOgden();
     ~HolzapfelGasserOgden() override;
 
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm,
-                     const std::string        &path) override;
-    void
-    evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
-             const StructuralDirections          &directions,
-             const bool                           with_second_derivative,
-             Response                            &response) const override;
-    double
-    initial_shear_modulus() const override;
-    unsigned int
-    n_structural_directions() const override;
+    static void  declare_parameters(dealii::ParameterHandler &prm);
+    void         parse_parameters(dealii::ParameterHandler &prm,
+                                  const std::string        &path) override;
+    void         evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
+                          const StructuralDirections          &directions,
+                          const bool                           with_second_derivative,
+                          Response                            &response) const override;
+    double       initial_shear_modulus() const override;
+    unsigned int n_structural_directions() const override;
     StructuralDirections
-    structural_directions(const dealii::Point<3> &X) const override;
-    std::string
-    summary() const override;
+                structural_directions(const dealii::Point<3> &X) const override;
+    std::string summary() const override;
 
   private:
     double       mu       = 0; ///< matrix shear modulus (Pa)

@@ -2,7 +2,6 @@
 #define softgrasp_materials_homogeneous_loading_h
 
 #include <deal.II/base/tensor.h>
-
 #include <softgrasp/materials/material.h>
 
 namespace softgrasp
@@ -21,24 +20,24 @@ namespace softgrasp
   public:
     struct State
     {
-      dealii::Tensor<1, 3> stretches;        ///< l1, l2, l3 (1)
-      double               nominal_stress = 0; ///< P_11 (Pa), force/reference area
-      double               cauchy_stress  = 0; ///< sigma_11 (Pa)
-      double               energy         = 0; ///< Psi (Pa)
-      unsigned int         iterations     = 0; ///< Newton iterations used
+      dealii::Tensor<1, 3> stretches;  ///< l1, l2, l3 (1)
+      double       nominal_stress = 0; ///< P_11 (Pa), force/reference area
+      double       cauchy_stress  = 0; ///< sigma_11 (Pa)
+      double       energy         = 0; ///< Psi (Pa)
+      unsigned int iterations     = 0; ///< Newton iterations used
     };
 
-    /// Uniaxial stress along x with stretch @p stretch: sigma_22 = sigma_33 = 0.
-    static State
-    uniaxial(const Material             &material,
-             const StructuralDirections &directions,
-             const double                stretch);
+    /// Uniaxial stress along x with stretch @p stretch: sigma_22 = sigma_33 =
+    /// 0.
+    static State uniaxial(const Material             &material,
+                          const StructuralDirections &directions,
+                          const double                stretch);
 
-    /// Equibiaxial stress in the x-y plane with l1 = l2 = @p stretch: sigma_33 = 0.
-    static State
-    equibiaxial(const Material             &material,
-                const StructuralDirections &directions,
-                const double                stretch);
+    /// Equibiaxial stress in the x-y plane with l1 = l2 = @p stretch: sigma_33
+    /// = 0.
+    static State equibiaxial(const Material             &material,
+                             const StructuralDirections &directions,
+                             const double                stretch);
   };
 } // namespace softgrasp
 

@@ -21,15 +21,14 @@ namespace softgrasp
       double W = 0, W1 = 0, W2 = 0, W11 = 0, W12 = 0, W22 = 0;
     };
 
-    void
-    evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
-             const StructuralDirections          &directions,
-             const bool                           with_second_derivative,
-             Response                            &response) const final;
+    void evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
+                  const StructuralDirections          &directions,
+                  const bool                           with_second_derivative,
+                  Response                            &response) const final;
 
   protected:
-    virtual Derivatives
-    invariant_derivatives(const double I1, const double I2) const = 0;
+    virtual Derivatives invariant_derivatives(const double I1,
+                                              const double I2) const = 0;
   };
 } // namespace softgrasp
 

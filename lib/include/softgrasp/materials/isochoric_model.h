@@ -1,14 +1,12 @@
 #ifndef softgrasp_materials_isochoric_model_h
 #define softgrasp_materials_isochoric_model_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-
 #include <softgrasp/base/plugin_registry.h>
-
-#include <array>
 #include <string>
 
 namespace softgrasp
@@ -19,8 +17,8 @@ namespace softgrasp
    */
   struct StructuralDirections
   {
-    static constexpr unsigned int    max_directions = 2;
-    unsigned int                     n_directions   = 0;
+    static constexpr unsigned int                    max_directions = 2;
+    unsigned int                                     n_directions   = 0;
     std::array<dealii::Tensor<1, 3>, max_directions> direction;
   };
 
@@ -52,23 +50,20 @@ namespace softgrasp
      * Evaluate at @p Cbar (det Cbar = 1). The second derivative is only
      * computed if @p with_second_derivative is set.
      */
-    virtual void
-    evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
-             const StructuralDirections          &directions,
-             const bool                           with_second_derivative,
-             Response                            &response) const = 0;
+    virtual void evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
+                          const StructuralDirections          &directions,
+                          const bool with_second_derivative,
+                          Response  &response) const = 0;
 
     /// The small-strain shear modulus mu_0 (Pa).
-    virtual double
-    initial_shear_modulus() const = 0;
+    virtual double initial_shear_modulus() const = 0;
 
     /// Read the model's parameters; @p path names the subsection in errors.
-    virtual void
-    parse_parameters(dealii::ParameterHandler &prm, const std::string &path) = 0;
+    virtual void parse_parameters(dealii::ParameterHandler &prm,
+                                  const std::string        &path) = 0;
 
     /// Number of structural directions the model needs (0 if isotropic).
-    virtual unsigned int
-    n_structural_directions() const;
+    virtual unsigned int n_structural_directions() const;
 
     /**
      * The unit structural directions at reference position @p X (m). The
@@ -78,14 +73,14 @@ namespace softgrasp
     structural_directions(const dealii::Point<3> &X) const;
 
     /// A one-line description with the parameter values, for logs.
-    virtual std::string
-    summary() const = 0;
+    virtual std::string summary() const = 0;
   };
 
   using IsochoricModelRegistry = PluginRegistry<IsochoricModel>;
 } // namespace softgrasp
 
-#define SOFTGRASP_REGISTER_ISOCHORIC_MODEL(Class, name, description) \
-  SOFTGRASP_REGISTER_PLUGIN(::softgrasp::IsochoricModel, Class, name, description)
+#define SOFTGRASP_REGISTER_ISOCHORIC_MODEL(Class, name, description)           \
+  SOFTGRASP_REGISTER_PLUGIN(                                                   \
+      ::softgrasp::IsochoricModel, Class, name, description)
 
 #endif

@@ -4,11 +4,9 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-
+#include <memory>
 #include <softgrasp/materials/isochoric_model.h>
 #include <softgrasp/materials/volumetric_energy.h>
-
-#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -60,23 +58,20 @@ namespace softgrasp
              const double                    density);
 
     /// S and (if @p with_tangent) dS/dE at deformation gradient @p F.
-    void
-    evaluate_material(const dealii::Tensor<2, 3> &F,
-                      const StructuralDirections &directions,
-                      const bool                  with_tangent,
-                      Response                   &response) const;
+    void evaluate_material(const dealii::Tensor<2, 3> &F,
+                           const StructuralDirections &directions,
+                           const bool                  with_tangent,
+                           Response                   &response) const;
 
     /// tau and (if @p with_tangent) J cc at deformation gradient @p F.
-    void
-    evaluate_spatial(const dealii::Tensor<2, 3> &F,
-                     const StructuralDirections &directions,
-                     const bool                  with_tangent,
-                     Response                   &response) const;
+    void evaluate_spatial(const dealii::Tensor<2, 3> &F,
+                          const StructuralDirections &directions,
+                          const bool                  with_tangent,
+                          Response                   &response) const;
 
     /// Psi(F) (Pa).
-    double
-    strain_energy(const dealii::Tensor<2, 3> &F,
-                  const StructuralDirections &directions) const;
+    double strain_energy(const dealii::Tensor<2, 3> &F,
+                         const StructuralDirections &directions) const;
 
     /// Cauchy stress sigma = tau / J (Pa).
     dealii::SymmetricTensor<2, 3>
@@ -97,27 +92,18 @@ namespace softgrasp
                             const StructuralDirections &directions) const;
 
     /// sqrt((kappa + 4/3 mu_0) / rho_0) (m/s), the small-strain value.
-    double
-    reference_wave_speed() const;
+    double reference_wave_speed() const;
 
     /// Structural (fibre) directions at reference position @p X (m).
-    StructuralDirections
-    structural_directions(const dealii::Point<3> &X) const;
+    StructuralDirections structural_directions(const dealii::Point<3> &X) const;
 
-    double
-    density() const; ///< reference density rho_0 (kg/m^3)
-    double
-    initial_shear_modulus() const; ///< mu_0 (Pa)
-    double
-    bulk_modulus() const; ///< kappa (Pa)
-    const std::string &
-    name() const;
-    std::string
-    summary() const;
-    const IsochoricModel &
-    isochoric_model() const;
-    const VolumetricEnergy &
-    volumetric_energy() const;
+    double                density() const; ///< reference density rho_0 (kg/m^3)
+    double                initial_shear_modulus() const; ///< mu_0 (Pa)
+    double                bulk_modulus() const;          ///< kappa (Pa)
+    const std::string    &name() const;
+    std::string           summary() const;
+    const IsochoricModel &isochoric_model() const;
+    const VolumetricEnergy &volumetric_energy() const;
 
   private:
     std::string                     material_name;

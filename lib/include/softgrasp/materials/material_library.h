@@ -3,11 +3,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
-
-#include <softgrasp/materials/material.h>
-
 #include <map>
 #include <memory>
+#include <softgrasp/materials/material.h>
 #include <string>
 #include <vector>
 
@@ -45,12 +43,10 @@ namespace softgrasp
   {
   public:
     /// Declare "Materials/Material ids" (the per-id subsections come later).
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    static void declare_parameters(dealii::ParameterHandler &prm);
 
     /// Declare one material's entries in the current subsection of @p prm.
-    static void
-    declare_material_parameters(dealii::ParameterHandler &prm);
+    static void declare_material_parameters(dealii::ParameterHandler &prm);
 
     /**
      * Read @p filename into @p prm (which holds the caller's declarations
@@ -58,13 +54,12 @@ namespace softgrasp
      * selected presets, then parse the file strictly, so that a misspelled
      * entry is an error naming its line.
      */
-    static void
-    parse_input(dealii::ParameterHandler &prm, const std::string &filename);
+    static void parse_input(dealii::ParameterHandler &prm,
+                            const std::string        &filename);
 
     /// As parse_input(), from the text of a parameter file.
-    static void
-    parse_input_from_string(dealii::ParameterHandler &prm,
-                            const std::string        &text);
+    static void parse_input_from_string(dealii::ParameterHandler &prm,
+                                        const std::string        &text);
 
     /// Build the material of the current subsection of @p prm.
     static std::shared_ptr<const Material>
@@ -77,28 +72,24 @@ namespace softgrasp
     create_preset(const std::string &preset_name);
 
     /// Build all materials from a parsed @p prm.
-    void
-    parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(dealii::ParameterHandler &prm);
 
     /// The material of @p id; throws an InputError listing configured ids.
-    const Material &
-    get(const dealii::types::material_id id) const;
+    const Material &get(const dealii::types::material_id id) const;
 
     /// Shared ownership of the material of @p id.
     std::shared_ptr<const Material>
     get_shared(const dealii::types::material_id id) const;
 
-    std::vector<dealii::types::material_id>
-    material_ids() const;
+    std::vector<dealii::types::material_id> material_ids() const;
 
     /// Add or replace the material of @p id (for programs that build in code).
-    void
-    set(const dealii::types::material_id id,
-        std::shared_ptr<const Material>  material);
+    void set(const dealii::types::material_id id,
+             std::shared_ptr<const Material>  material);
 
   private:
     std::map<dealii::types::material_id, std::shared_ptr<const Material>>
-      materials;
+        materials;
   };
 } // namespace softgrasp
 

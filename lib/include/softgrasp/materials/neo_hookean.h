@@ -13,19 +13,15 @@ namespace softgrasp
   class NeoHookean : public InvariantModel
   {
   public:
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm,
-                     const std::string        &path) override;
-    double
-    initial_shear_modulus() const override;
-    std::string
-    summary() const override;
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void        parse_parameters(dealii::ParameterHandler &prm,
+                                 const std::string        &path) override;
+    double      initial_shear_modulus() const override;
+    std::string summary() const override;
 
   protected:
-    Derivatives
-    invariant_derivatives(const double I1, const double I2) const override;
+    Derivatives invariant_derivatives(const double I1,
+                                      const double I2) const override;
 
   private:
     double mu = 0; ///< shear modulus (Pa)

@@ -2,16 +2,15 @@
 #define softgrasp_materials_ogden_h
 
 #include <softgrasp/materials/isochoric_model.h>
-
 #include <vector>
 
 namespace softgrasp
 {
   /**
    * Ogden solid with N terms on the isochoric principal stretches,
-   *   Psi_iso = sum_p mu_p/alpha_p (lb1^alpha_p + lb2^alpha_p + lb3^alpha_p - 3),
-   * lb_i = J^{-1/3} lambda_i, small-strain shear modulus
-   * mu_0 = 1/2 sum_p mu_p alpha_p (Ogden 1972 convention).
+   *   Psi_iso = sum_p mu_p/alpha_p (lb1^alpha_p + lb2^alpha_p + lb3^alpha_p -
+   * 3), lb_i = J^{-1/3} lambda_i, small-strain shear modulus mu_0 = 1/2 sum_p
+   * mu_p alpha_p (Ogden 1972 convention).
    *
    * Written in the eigenvalues c_i = lb_i^2 of Cbar as a separable sum
    * Psi = sum_i phi(c_i). The second derivative carries the divided
@@ -27,25 +26,19 @@ namespace softgrasp
   class Ogden : public IsochoricModel
   {
   public:
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm,
-                     const std::string        &path) override;
-    void
-    evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
-             const StructuralDirections          &directions,
-             const bool                           with_second_derivative,
-             Response                            &response) const override;
-    double
-    initial_shear_modulus() const override;
-    std::string
-    summary() const override;
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void        parse_parameters(dealii::ParameterHandler &prm,
+                                 const std::string        &path) override;
+    void        evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
+                         const StructuralDirections          &directions,
+                         const bool                           with_second_derivative,
+                         Response                            &response) const override;
+    double      initial_shear_modulus() const override;
+    std::string summary() const override;
 
   private:
     /// phi(c) = sum_p mu_p/alpha_p (c^{alpha_p/2} - 1) and derivatives.
-    double
-    phi(const double c, const unsigned int derivative) const;
+    double phi(const double c, const unsigned int derivative) const;
 
     std::vector<double> moduli;    ///< mu_p (Pa)
     std::vector<double> exponents; ///< alpha_p (1)

@@ -25,16 +25,13 @@ namespace softgrasp
     };
 
     /// All presets, in a fixed order.
-    static const std::vector<Preset> &
-    all();
+    static const std::vector<Preset> &all();
 
     /// The preset named @p name; throws an InputError listing valid names.
-    static const Preset &
-    get(const std::string &name);
+    static const Preset &get(const std::string &name);
 
     /// "none|skin|...", for a Patterns::Selection.
-    static std::string
-    selection();
+    static std::string selection();
   };
 } // namespace softgrasp
 

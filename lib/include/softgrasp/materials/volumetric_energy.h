@@ -29,23 +29,16 @@ namespace softgrasp
     VolumetricEnergy(const Type type, const double bulk_modulus);
 
     /// "quadratic|logarithmic|Simo-Taylor", for a Patterns::Selection.
-    static std::string
-    names();
+    static std::string names();
     /// The type named @p name; throws an InputError listing the valid names.
-    static Type
-    type_from_name(const std::string &name);
+    static Type type_from_name(const std::string &name);
 
-    double
-    energy(const double J) const; ///< U(J), Pa
-    double
-    first_derivative(const double J) const; ///< dU/dJ, Pa
-    double
-    second_derivative(const double J) const; ///< d2U/dJ2, Pa
+    double energy(const double J) const;            ///< U(J), Pa
+    double first_derivative(const double J) const;  ///< dU/dJ, Pa
+    double second_derivative(const double J) const; ///< d2U/dJ2, Pa
 
-    double
-    bulk_modulus() const;
-    std::string
-    name() const;
+    double      bulk_modulus() const;
+    std::string name() const;
 
   private:
     Type   type  = Type::simo_taylor;

@@ -2,7 +2,6 @@
 #define softgrasp_materials_yeoh_h
 
 #include <softgrasp/materials/invariant_model.h>
-
 #include <vector>
 
 namespace softgrasp
@@ -15,19 +14,15 @@ namespace softgrasp
   class Yeoh : public InvariantModel
   {
   public:
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    void
-    parse_parameters(dealii::ParameterHandler &prm,
-                     const std::string        &path) override;
-    double
-    initial_shear_modulus() const override;
-    std::string
-    summary() const override;
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void        parse_parameters(dealii::ParameterHandler &prm,
+                                 const std::string        &path) override;
+    double      initial_shear_modulus() const override;
+    std::string summary() const override;
 
   protected:
-    Derivatives
-    invariant_derivatives(const double I1, const double I2) const override;
+    Derivatives invariant_derivatives(const double I1,
+                                      const double I2) const override;
 
   private:
     std::vector<double> coefficients; ///< C10, C20, ... (Pa)

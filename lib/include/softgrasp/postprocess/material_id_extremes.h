@@ -4,11 +4,9 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/table_handler.h>
 #include <deal.II/dofs/dof_handler.h>
-
-#include <softgrasp/materials/material_library.h>
-
 #include <map>
 #include <ostream>
+#include <softgrasp/materials/material_library.h>
 
 namespace softgrasp
 {
@@ -19,8 +17,7 @@ namespace softgrasp
    * largest e_max and smallest e_min (1), smallest and largest J (1),
    * largest von Mises stress (Pa).
    */
-  template <int dim>
-  class MaterialIdExtremes
+  template <int dim> class MaterialIdExtremes
   {
   public:
     struct Extremes
@@ -39,19 +36,16 @@ namespace softgrasp
      * which must have ghost entries for the locally owned cells.
      */
     template <typename VectorType>
-    void
-    compute(const dealii::DoFHandler<dim> &dof_handler,
-            const VectorType              &solution,
-            const MaterialLibrary         &materials,
-            const dealii::Quadrature<dim> &quadrature,
-            const unsigned int             first_component = 0);
+    void compute(const dealii::DoFHandler<dim> &dof_handler,
+                 const VectorType              &solution,
+                 const MaterialLibrary         &materials,
+                 const dealii::Quadrature<dim> &quadrature,
+                 const unsigned int             first_component = 0);
 
-    const std::map<dealii::types::material_id, Extremes> &
-    extremes() const;
+    const std::map<dealii::types::material_id, Extremes> &extremes() const;
 
     /// A table with one row per material id.
-    dealii::TableHandler
-    table(const MaterialLibrary &materials) const;
+    dealii::TableHandler table(const MaterialLibrary &materials) const;
 
   private:
     std::map<dealii::types::material_id, Extremes> values;

@@ -1,10 +1,9 @@
 #ifndef softgrasp_postprocess_principal_strains_h
 #define softgrasp_postprocess_principal_strains_h
 
+#include <array>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-
-#include <array>
 
 namespace softgrasp
 {
@@ -23,24 +22,20 @@ namespace softgrasp
     std::array<dealii::Tensor<1, 3>, 3> directions; ///< n_i, reference frame
     double                              J = 1;      ///< det F (1)
 
-    static PrincipalStrains
-    compute(const dealii::Tensor<2, 3> &F);
+    static PrincipalStrains compute(const dealii::Tensor<2, 3> &F);
 
-    double
-    e_max() const
+    double e_max() const
     {
       return strains[0];
     }
-    double
-    e_min() const
+    double e_min() const
     {
       return strains[2];
     }
   };
 
   /// Von Mises equivalent stress sqrt(3/2 dev(sigma):dev(sigma)) (Pa).
-  double
-  von_mises_stress(const dealii::SymmetricTensor<2, 3> &sigma);
+  double von_mises_stress(const dealii::SymmetricTensor<2, 3> &sigma);
 } // namespace softgrasp
 
 #endif

@@ -19,20 +19,18 @@ namespace softgrasp
   public:
     explicit StrainPostprocessor(const unsigned int first_component = 0);
 
-    void
-    evaluate_vector_field(
-      const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
-      std::vector<dealii::Vector<double>> &computed_quantities) const override;
+    void evaluate_vector_field(
+        const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<dealii::Vector<double>>                &computed_quantities)
+        const override;
 
-    std::vector<std::string>
-    get_names() const override;
+    std::vector<std::string> get_names() const override;
 
     std::vector<
-      dealii::DataComponentInterpretation::DataComponentInterpretation>
+        dealii::DataComponentInterpretation::DataComponentInterpretation>
     get_data_component_interpretation() const override;
 
-    dealii::UpdateFlags
-    get_needed_update_flags() const override;
+    dealii::UpdateFlags get_needed_update_flags() const override;
 
   private:
     const unsigned int first_component;

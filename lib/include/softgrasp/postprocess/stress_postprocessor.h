@@ -2,7 +2,6 @@
 #define softgrasp_postprocess_stress_postprocessor_h
 
 #include <deal.II/numerics/data_postprocessor.h>
-
 #include <softgrasp/materials/material_library.h>
 
 namespace softgrasp
@@ -23,20 +22,18 @@ namespace softgrasp
     StressPostprocessor(const MaterialLibrary &materials,
                         const unsigned int     first_component = 0);
 
-    void
-    evaluate_vector_field(
-      const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
-      std::vector<dealii::Vector<double>> &computed_quantities) const override;
+    void evaluate_vector_field(
+        const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<dealii::Vector<double>>                &computed_quantities)
+        const override;
 
-    std::vector<std::string>
-    get_names() const override;
+    std::vector<std::string> get_names() const override;
 
     std::vector<
-      dealii::DataComponentInterpretation::DataComponentInterpretation>
+        dealii::DataComponentInterpretation::DataComponentInterpretation>
     get_data_component_interpretation() const override;
 
-    dealii::UpdateFlags
-    get_needed_update_flags() const override;
+    dealii::UpdateFlags get_needed_update_flags() const override;
 
   private:
     const MaterialLibrary &materials;
