@@ -100,11 +100,38 @@ namespace softgrasp
                        "working directory.");
     std::stringstream text;
     text << file.rdbuf();
-    parse_input_from_string(prm, text.str());
+    parse_input_from_string(prm, text.str(), filename);
   }
 
   void MaterialLibrary::parse_input_from_string(ParameterHandler  &prm,
-                                                const std::string &text)
+                                                const std::string &text,
+                                                const std::string &source)
+  {
+    try
+    {
+      parse_in_passes(prm, text);
+    }
+    catch (const ExceptionBase &e)
+    {
+      // deal.II's parse errors (undeclared entry, pattern mismatch) carry a
+      // stack trace; keep only the message and name the file.
+      std::ostringstream info;
+      e.print_info(info);
+      std::string       message     = info.str();
+      const std::string placeholder = "<input string>";
+      for (auto pos = message.find(placeholder); pos != std::string::npos;
+           pos      = message.find(placeholder, pos + source.size() + 2))
+        message.replace(pos, placeholder.size(), "<" + source + ">");
+      throw InputError("The parameter file '" + source +
+                       "' cannot be read: " + Utilities::trim(message) +
+                       " Fix: check the spelling and the allowed values; "
+                       "the programs list every parameter with its "
+                       "documentation (see doc/parameters/).");
+    }
+  }
+
+  void MaterialLibrary::parse_in_passes(ParameterHandler  &prm,
+                                        const std::string &text)
   {
     // Pass 1: the material ids (everything else may not be declared yet).
     prm.parse_input_from_string(text, "", /*skip_undefined=*/true);

@@ -57,9 +57,14 @@ namespace softgrasp
     static void parse_input(dealii::ParameterHandler &prm,
                             const std::string        &filename);
 
-    /// As parse_input(), from the text of a parameter file.
-    static void parse_input_from_string(dealii::ParameterHandler &prm,
-                                        const std::string        &text);
+    /**
+     * As parse_input(), from the text of a parameter file; @p source names
+     * it in error messages. Parse errors become an InputError.
+     */
+    static void
+    parse_input_from_string(dealii::ParameterHandler &prm,
+                            const std::string        &text,
+                            const std::string        &source = "input string");
 
     /// Build the material of the current subsection of @p prm.
     static std::shared_ptr<const Material>
@@ -88,6 +93,10 @@ namespace softgrasp
              std::shared_ptr<const Material>  material);
 
   private:
+    /// The passes of parse_input_from_string().
+    static void parse_in_passes(dealii::ParameterHandler &prm,
+                                const std::string        &text);
+
     std::map<dealii::types::material_id, std::shared_ptr<const Material>>
         materials;
   };
