@@ -16,19 +16,6 @@ namespace
   const char *vol = "set Density = 1000\nsubsection Volumetric\nset Poisson's "
                     "ratio = 0.45\nend\n";
 
-  std::shared_ptr<const Material> build(const std::string &fragment)
-  {
-    ParameterHandler prm;
-    MaterialLibrary::declare_parameters(prm);
-    MaterialLibrary::parse_input_from_string(
-        prm,
-        "subsection Materials\nset Material ids = 0\nsubsection Material 0\n" +
-            fragment + "\nend\nend\n");
-    MaterialLibrary library;
-    library.parse_parameters(prm);
-    return library.get_shared(0);
-  }
-
   Tensor<2, 3> deformation()
   {
     Tensor<2, 3> F;
@@ -44,9 +31,10 @@ namespace
   void
   run(benchmark::State &state, const std::string &fragment, const bool tangent)
   {
-    const auto         material = build(fragment);
-    const auto         d        = material->structural_directions(Point<3>());
-    const Tensor<2, 3> F        = deformation();
+    const auto material =
+        MaterialLibrary::create_from_fragment(fragment, "benchmark");
+    const auto         d = material->structural_directions(Point<3>());
+    const Tensor<2, 3> F = deformation();
     Material::Response r;
     for (auto _ : state)
     {

@@ -228,11 +228,18 @@ namespace softgrasp
   std::shared_ptr<const Material>
   MaterialLibrary::create_preset(const std::string &preset_name)
   {
-    const auto      &preset = TissuePresets::get(preset_name);
+    return create_from_fragment(TissuePresets::get(preset_name).parameters,
+                                preset_name);
+  }
+
+  std::shared_ptr<const Material>
+  MaterialLibrary::create_from_fragment(const std::string &fragment,
+                                        const std::string &name)
+  {
     ParameterHandler prm;
     declare_material_parameters(prm);
-    prm.parse_input_from_string(preset.parameters);
-    return create_material(prm, "Preset " + preset_name, preset_name);
+    prm.parse_input_from_string(fragment);
+    return create_material(prm, name, name);
   }
 
   void MaterialLibrary::parse_parameters(ParameterHandler &prm)

@@ -72,6 +72,14 @@ namespace softgrasp
                     const std::string        &path,
                     const std::string        &name);
 
+    /**
+     * Build a material from @p fragment, the entries of one material
+     * subsection in .prm syntax (e.g. "set Model = neo-Hookean ..."); for
+     * programs and benchmarks that configure a material in code.
+     */
+    static std::shared_ptr<const Material>
+    create_from_fragment(const std::string &fragment, const std::string &name);
+
     /// Build a material from a preset alone (with its default parameters).
     static std::shared_ptr<const Material>
     create_preset(const std::string &preset_name);
