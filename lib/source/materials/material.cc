@@ -32,6 +32,41 @@ namespace softgrasp
                                    const bool                  with_tangent,
                                    Response                   &response) const
   {
+    evaluate_decoupled(F, directions, with_tangent, false, 0.0, response);
+  }
+
+  void Material::evaluate_material_with_pressure(
+      const Tensor<2, 3>         &F,
+      const StructuralDirections &directions,
+      const double                pressure,
+      const bool                  with_tangent,
+      Response                   &response) const
+  {
+    evaluate_decoupled(F, directions, with_tangent, true, pressure, response);
+  }
+
+  void Material::evaluate_spatial_with_pressure(
+      const Tensor<2, 3>         &F,
+      const StructuralDirections &directions,
+      const double                pressure,
+      const bool                  with_tangent,
+      Response                   &response) const
+  {
+    evaluate_decoupled(F, directions, with_tangent, true, pressure, response);
+    response.stress = Physics::Transformations::Contravariant::push_forward(
+        response.stress, F);
+    if (with_tangent)
+      response.tangent = Physics::Transformations::Contravariant::push_forward(
+          response.tangent, F);
+  }
+
+  void Material::evaluate_decoupled(const Tensor<2, 3>         &F,
+                                    const StructuralDirections &directions,
+                                    const bool                  with_tangent,
+                                    const bool                  given_pressure,
+                                    const double                pressure,
+                                    Response &response) const
+  {
     const double J = determinant(F);
     if (!(J > 0) || !std::isfinite(J))
       throw InvertedMaterialState(J);
@@ -46,8 +81,10 @@ namespace softgrasp
     const double                 XC = X * C;
 
     // Volumetric part: S_vol = J U' C^{-1}.
-    const double dU = volumetric.first_derivative(J);
-    response.energy = volumetric.energy(J) + iso.energy;
+    const double dU =
+        given_pressure ? pressure : volumetric.first_derivative(J);
+    response.energy =
+        given_pressure ? iso.energy : volumetric.energy(J) + iso.energy;
     response.stress = J * dU * Cinv + 2.0 * f * (X - (XC / 3.0) * Cinv);
     if (!with_tangent)
       return;
@@ -55,7 +92,8 @@ namespace softgrasp
     const SymmetricTensor<4, 3> CinvCinv = outer_product(Cinv, Cinv);
     const SymmetricTensor<4, 3> CinvSym =
         TensorAlgebra::symmetric_product(Cinv, Cinv);
-    const double d2U = volumetric.second_derivative(J);
+    const double d2U =
+        given_pressure ? 0.0 : volumetric.second_derivative(J);
 
     // CC_vol = (J^2 U'' + J U') C^-1 (x) C^-1 - 2 J U' C^-1 (.) C^-1
     SymmetricTensor<4, 3> tangent =

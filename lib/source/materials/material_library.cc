@@ -93,75 +93,52 @@ namespace softgrasp
   void MaterialLibrary::parse_input(ParameterHandler  &prm,
                                     const std::string &filename)
   {
-    std::ifstream file(filename);
-    if (!file)
-      throw InputError("Cannot open the parameter file '" + filename +
-                       "'. Fix: check the path; it is read relative to the "
-                       "working directory.");
-    std::stringstream text;
-    text << file.rdbuf();
-    parse_input_from_string(prm, text.str(), filename);
+    ParameterReader reader;
+    add_passes(reader);
+    reader.read_file(prm, filename);
   }
 
   void MaterialLibrary::parse_input_from_string(ParameterHandler  &prm,
                                                 const std::string &text,
                                                 const std::string &source)
   {
-    try
-    {
-      parse_in_passes(prm, text);
-    }
-    catch (const ExceptionBase &e)
-    {
-      // deal.II's parse errors (undeclared entry, pattern mismatch) carry a
-      // stack trace; keep only the message and name the file.
-      std::ostringstream info;
-      e.print_info(info);
-      std::string       message     = info.str();
-      const std::string placeholder = "<input string>";
-      for (auto pos = message.find(placeholder); pos != std::string::npos;
-           pos      = message.find(placeholder, pos + source.size() + 2))
-        message.replace(pos, placeholder.size(), "<" + source + ">");
-      throw InputError("The parameter file '" + source +
-                       "' cannot be read: " + Utilities::trim(message) +
-                       " Fix: check the spelling and the allowed values; "
-                       "the programs list every parameter with its "
-                       "documentation (see doc/parameters/).");
-    }
+    ParameterReader reader;
+    add_passes(reader);
+    reader.read_string(prm, text, source);
   }
 
-  void MaterialLibrary::parse_in_passes(ParameterHandler  &prm,
-                                        const std::string &text)
+  void MaterialLibrary::add_passes(ParameterReader &reader)
   {
-    // Pass 1: the material ids (everything else may not be declared yet).
-    prm.parse_input_from_string(text, "", /*skip_undefined=*/true);
-    prm.enter_subsection("Materials");
-    const auto ids = parse_ids(prm.get("Material ids"));
-    for (const auto id : ids)
-    {
-      prm.enter_subsection(subsection_name(id));
-      declare_material_parameters(prm);
-      prm.leave_subsection();
-    }
-    prm.leave_subsection();
-
-    // Pass 2: which presets are selected; apply them.
-    prm.parse_input_from_string(text, "", /*skip_undefined=*/true);
-    for (const auto id : ids)
-    {
+    // Pass 1: the ids are known; declare one subsection per id.
+    reader.add_pass([](ParameterHandler &prm) {
       prm.enter_subsection("Materials");
-      prm.enter_subsection(subsection_name(id));
-      const std::string preset = prm.get("Preset");
+      for (const auto id : parse_ids(prm.get("Material ids")))
+      {
+        prm.enter_subsection(subsection_name(id));
+        declare_material_parameters(prm);
+        prm.leave_subsection();
+      }
       prm.leave_subsection();
+    });
+    // Pass 2: apply presets; the final strict parse puts the user's entries
+    // on top of them.
+    reader.add_pass([](ParameterHandler &prm) {
+      prm.enter_subsection("Materials");
+      const auto ids = parse_ids(prm.get("Material ids"));
       prm.leave_subsection();
-      if (preset != "none")
-        prm.parse_input_from_string(
-            "subsection Materials\nsubsection " + subsection_name(id) + "\n" +
-            TissuePresets::get(preset).parameters + "end\nend\n");
-    }
-
-    // Pass 3: the user's entries, strictly, on top of the presets.
-    prm.parse_input_from_string(text, "", /*skip_undefined=*/false);
+      for (const auto id : ids)
+      {
+        prm.enter_subsection("Materials");
+        prm.enter_subsection(subsection_name(id));
+        const std::string preset = prm.get("Preset");
+        prm.leave_subsection();
+        prm.leave_subsection();
+        if (preset != "none")
+          prm.parse_input_from_string(
+              "subsection Materials\nsubsection " + subsection_name(id) +
+              "\n" + TissuePresets::get(preset).parameters + "end\nend\n");
+      }
+    });
   }
 
   std::shared_ptr<const Material>

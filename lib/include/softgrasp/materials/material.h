@@ -63,6 +63,26 @@ namespace softgrasp
                            const bool                  with_tangent,
                            Response                   &response) const;
 
+    /**
+     * As evaluate_material(), but with the volumetric stress set by a given
+     * pressure @p pressure (Pa) instead of U'(J): S = S_iso + p J C^{-1}, and
+     * the tangent holds p fixed. This is the displacement block of mixed
+     * (u-p-J) formulations, where p is an independent, element-wise field;
+     * the energy returned is the isochoric part only.
+     */
+    void evaluate_material_with_pressure(const dealii::Tensor<2, 3> &F,
+                                         const StructuralDirections &directions,
+                                         const double                pressure,
+                                         const bool                  with_tangent,
+                                         Response &response) const;
+
+    /// Spatial counterpart of evaluate_material_with_pressure(): tau, J cc.
+    void evaluate_spatial_with_pressure(const dealii::Tensor<2, 3> &F,
+                                        const StructuralDirections &directions,
+                                        const double                pressure,
+                                        const bool                  with_tangent,
+                                        Response                   &response) const;
+
     /// tau and (if @p with_tangent) J cc at deformation gradient @p F.
     void evaluate_spatial(const dealii::Tensor<2, 3> &F,
                           const StructuralDirections &directions,
@@ -106,6 +126,15 @@ namespace softgrasp
     const VolumetricEnergy &volumetric_energy() const;
 
   private:
+    /// Common path: volumetric stress from a pressure @p p and its
+    /// derivative @p dp_dJ (U'(J), U''(J) for the decoupled material).
+    void evaluate_decoupled(const dealii::Tensor<2, 3> &F,
+                            const StructuralDirections &directions,
+                            const bool                  with_tangent,
+                            const bool                  given_pressure,
+                            const double                pressure,
+                            Response                   &response) const;
+
     std::string                     material_name;
     std::unique_ptr<IsochoricModel> model;
     VolumetricEnergy                volumetric;

@@ -5,6 +5,7 @@
 #include <deal.II/base/types.h>
 #include <map>
 #include <memory>
+#include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/materials/material.h>
 #include <string>
 #include <vector>
@@ -100,11 +101,14 @@ namespace softgrasp
     void set(const dealii::types::material_id id,
              std::shared_ptr<const Material>  material);
 
-  private:
-    /// The passes of parse_input_from_string().
-    static void parse_in_passes(dealii::ParameterHandler &prm,
-                                const std::string        &text);
+    /**
+     * Add this library's declaration passes to @p reader: declare the
+     * per-id subsections, then apply each id's preset. Programs that read
+     * further dynamic sections add their own passes to the same reader.
+     */
+    static void add_passes(ParameterReader &reader);
 
+  private:
     std::map<dealii::types::material_id, std::shared_ptr<const Material>>
         materials;
   };

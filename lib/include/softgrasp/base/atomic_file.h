@@ -1,0 +1,27 @@
+#ifndef softgrasp_base_atomic_file_h
+#define softgrasp_base_atomic_file_h
+
+#include <string>
+
+namespace softgrasp
+{
+  /**
+   * Output files are written whole or not at all: the content goes to a
+   * temporary file next to the target, which is then renamed over it
+   * (rename is atomic on POSIX file systems). A reader, or a run killed
+   * mid-write, never sees a half-written file.
+   */
+  namespace AtomicFile
+  {
+    /// The temporary name used for @p filename while it is being written.
+    std::string temporary_name(const std::string &filename);
+
+    /// Write @p content to @p filename atomically; throws on I/O failure.
+    void write(const std::string &filename, const std::string &content);
+
+    /// Rename @p from to @p to (atomic replace); throws on failure.
+    void commit(const std::string &from, const std::string &to);
+  } // namespace AtomicFile
+} // namespace softgrasp
+
+#endif

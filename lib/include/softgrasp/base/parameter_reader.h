@@ -1,0 +1,43 @@
+#ifndef softgrasp_base_parameter_reader_h
+#define softgrasp_base_parameter_reader_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace softgrasp
+{
+  /**
+   * Reads a .prm file whose set of subsections depends on its own content
+   * (a subsection per material id, per boundary id, ...). The text is parsed
+   * leniently once per declaration pass; each pass reads what is known so
+   * far and declares further entries (or applies presets). A final strict
+   * parse then reports any misspelled or undeclared entry.
+   *
+   * deal.II's parse errors become InputErrors naming the file, the line and
+   * the fix.
+   */
+  class ParameterReader
+  {
+  public:
+    using Pass = std::function<void(dealii::ParameterHandler &)>;
+
+    /// Register a pass; passes run in the order they were added.
+    void add_pass(Pass pass);
+
+    /// Parse the file @p filename into @p prm.
+    void read_file(dealii::ParameterHandler &prm,
+                   const std::string        &filename) const;
+
+    /// Parse @p text (from @p source, used in messages) into @p prm.
+    void read_string(dealii::ParameterHandler &prm,
+                     const std::string        &text,
+                     const std::string        &source) const;
+
+  private:
+    std::vector<Pass> passes;
+  };
+} // namespace softgrasp
+
+#endif

@@ -1,0 +1,67 @@
+#ifndef softgrasp_io_checkpoint_h
+#define softgrasp_io_checkpoint_h
+
+#include <deal.II/distributed/tria.h>
+#include <softgrasp/mechanics/solid_system.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace softgrasp
+{
+  /// The scalar state of a run that a restart needs besides the fields.
+  struct RunState
+  {
+    double       time      = 0; ///< s
+    double       step_size = 0; ///< s
+    unsigned int step      = 0;
+    unsigned int n_outputs = 0;
+    std::vector<std::string>                    history_columns;
+    std::vector<std::vector<double>>            history_rows;
+    std::vector<std::pair<double, std::string>> output_records;
+
+    template <class Archive>
+    void serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &time &step_size &step &n_outputs &history_columns &history_rows
+          &output_records;
+    }
+  };
+
+  /**
+   * Checkpoints of a quasi-static run: the distributed mesh and displacement
+   * (p4est and deal.II's SolutionTransfer, so a run may restart on a
+   * different number of ranks) and the RunState (Boost serialization).
+   *
+   * A checkpoint is written into "<directory>/checkpoint.new" and then
+   * renamed to "<directory>/checkpoint", keeping the previous one as
+   * "checkpoint.old" until the rename is done: a run killed at any moment
+   * leaves at least one complete checkpoint.
+   */
+  template <int dim>
+  class Checkpoint
+  {
+  public:
+    explicit Checkpoint(std::string directory);
+
+    void save(const dealii::parallel::distributed::Triangulation<dim> &tria,
+              const SolidSystem<dim>                                  &system,
+              const RunState &state) const;
+
+    /// True if a complete checkpoint exists.
+    bool exists() const;
+
+    /**
+     * Load into @p tria (which holds the same coarse mesh as the saved run)
+     * and @p system (set up here); returns the saved RunState.
+     */
+    RunState load(dealii::parallel::distributed::Triangulation<dim> &tria,
+                  SolidSystem<dim> &system) const;
+
+  private:
+    std::string complete_directory() const;
+    std::string directory;
+  };
+} // namespace softgrasp
+
+#endif

@@ -1,0 +1,100 @@
+#ifndef softgrasp_mechanics_cell_assembler_h
+#define softgrasp_mechanics_cell_assembler_h
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+#include <softgrasp/materials/material_library.h>
+#include <softgrasp/mechanics/boundary_conditions.h>
+#include <softgrasp/mechanics/element_dilatation.h>
+#include <softgrasp/mechanics/solver_parameters.h>
+#include <string>
+#include <vector>
+
+namespace softgrasp
+{
+  /// Per-thread scratch space of the WorkStream assembly.
+  template <int dim>
+  struct AssemblyScratchData
+  {
+    AssemblyScratchData(const dealii::Mapping<dim>        &mapping,
+                        const dealii::FiniteElement<dim>  &fe,
+                        const dealii::Quadrature<dim>     &quadrature,
+                        const dealii::Quadrature<dim - 1> &face_quadrature);
+    AssemblyScratchData(const AssemblyScratchData &other);
+
+    dealii::FEValues<dim>                            fe_values;
+    dealii::FEFaceValues<dim>                        fe_face_values;
+    std::vector<dealii::Tensor<2, dim>>              grad_u;
+    std::vector<double>                              J, JxW;
+    std::vector<std::vector<dealii::Tensor<2, dim>>> grad_Nx; ///< [q][k]
+    ElementDilatation<dim>                           dilatation;
+  };
+
+  /// What one cell contributes; copied into the global system serially.
+  struct AssemblyCopyData
+  {
+    dealii::FullMatrix<double>                   matrix;
+    dealii::Vector<double>                       internal; ///< f_int (N)
+    dealii::Vector<double>                       external; ///< f_ext (N)
+    std::vector<dealii::types::global_dof_index> dof_indices;
+    bool        failed   = false; ///< inverted element
+    double      failed_J = 0;
+    std::string failed_cell;
+  };
+
+  /**
+   * The weak form of the quasi-static solid on one cell, in the spatial
+   * (updated) form of the total-Lagrangian equations (as deal.II step-44):
+   *   internal force  f_k = int tau : sym(grad_x N_k) dV,
+   *   tangent         K_kl = int sym(grad_x N_k) : J cc : sym(grad_x N_l)
+   *                          + grad_x N_k : (grad_x N_l tau) dV
+   *                          (+ K_con of ElementDilatation for u-p-J),
+   *   body force      int N_k rho_0 g dV,
+   *   dead traction   int N_k t_0 dA,
+   *   follower load   -int N_k p J F^-T N dA, with its (unsymmetric)
+   *                   linearisation.
+   * Integrals are over the reference configuration. In 2D the material is
+   * evaluated in plane strain.
+   */
+  template <int dim>
+  class CellAssembler
+  {
+  public:
+    CellAssembler(const MaterialLibrary         &materials,
+                  const BoundaryConditions<dim> &boundary_conditions,
+                  const Formulation              formulation);
+
+    /// Fill @p copy for @p cell at displacement @p u (ghosted).
+    void assemble(const typename dealii::DoFHandler<dim>::active_cell_iterator
+                                                         &cell,
+                  const dealii::TrilinosWrappers::MPI::Vector &u,
+                  const bool                                  with_matrix,
+                  AssemblyScratchData<dim>                   &scratch,
+                  AssemblyCopyData                           &copy) const;
+
+  private:
+    void assemble_volume(const dealii::TrilinosWrappers::MPI::Vector &u,
+                         const Material                              &material,
+                         const bool                 with_matrix,
+                         AssemblyScratchData<dim> &scratch,
+                         AssemblyCopyData         &copy) const;
+
+    void assemble_boundary(
+        const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+        const dealii::TrilinosWrappers::MPI::Vector                  &u,
+        const bool                                                    with_matrix,
+        AssemblyScratchData<dim>                                     &scratch,
+        AssemblyCopyData                                             &copy) const;
+
+    const MaterialLibrary         &materials;
+    const BoundaryConditions<dim> &boundary_conditions;
+    const Formulation              formulation;
+  };
+} // namespace softgrasp
+
+#endif

@@ -1,0 +1,72 @@
+#ifndef softgrasp_mechanics_element_dilatation_h
+#define softgrasp_mechanics_element_dilatation_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <softgrasp/materials/volumetric_energy.h>
+#include <vector>
+
+namespace softgrasp
+{
+  /**
+   * The element-local fields of the three-field (Hu-Washizu) u-p-J
+   * formulation,
+   *   Pi(u, p~, J~) = int Psi_iso(Cbar) + U(J~) + p~ (J - J~) dV,
+   * with p~ and J~ discontinuous polynomials of degree k (P0 for Q1, P1 for
+   * Q2 displacements). Their two stationarity conditions are element-local
+   * L2 projections,
+   *   J~ = Pi_h J,        p~ = Pi_h U'(J~),
+   * so for a given displacement both follow on each element without global
+   * unknowns. Linearising p~ through J~ gives the condensed volumetric
+   * stiffness
+   *   K_con = G^T M^-1 K_JJ M^-1 G,
+   * with M the mass matrix of the P_k basis, K_JJ = int N U''(J~) N^T dV and
+   * G_ak = int N_a J div_x(N_k) dV. This is the static condensation of
+   * deal.II step-44 carried out exactly, and reduces to the mean-dilatation
+   * method for P0.
+   *
+   * The P1 basis is {1, (X - X_c)/h} in reference coordinates, centred and
+   * scaled on the element for conditioning.
+   */
+  template <int dim>
+  class ElementDilatation
+  {
+  public:
+    /// @p degree of the pressure/dilatation polynomials: 0 or 1.
+    explicit ElementDilatation(const unsigned int degree);
+
+    /**
+     * Compute J~ and p~ on one element from the quadrature points
+     * @p points (reference, m), weights @p JxW (m^3) and the pointwise
+     * J = det F at them. Throws InvertedMaterialState if J~ <= 0 anywhere.
+     */
+    void reinit(const std::vector<dealii::Point<dim>> &points,
+                const std::vector<double>             &JxW,
+                const std::vector<double>             &J,
+                const VolumetricEnergy                &energy);
+
+    unsigned int n_basis() const;
+    /// Basis function @p a at quadrature point @p q.
+    double basis(const unsigned int a, const unsigned int q) const;
+    /// Projected pressure p~ (Pa) at quadrature point @p q.
+    double pressure(const unsigned int q) const;
+    /// Projected dilatation J~ at quadrature point @p q.
+    double dilatation(const unsigned int q) const;
+    /// Element mean of p~ (Pa).
+    double mean_pressure() const;
+    /// The n_basis x n_basis kernel A = M^-1 K_JJ M^-1 (Pa/m^6).
+    const dealii::FullMatrix<double> &condensed_kernel() const;
+
+  private:
+    unsigned int               degree;
+    unsigned int               n_functions;
+    unsigned int               n_points = 0;
+    std::vector<double>        values; ///< N_a(x_q), a-major
+    std::vector<double>        p_tilde, J_tilde;
+    double                     p_mean = 0;
+    dealii::FullMatrix<double> kernel;
+  };
+} // namespace softgrasp
+
+#endif

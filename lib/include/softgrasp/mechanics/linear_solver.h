@@ -1,0 +1,55 @@
+#ifndef softgrasp_mechanics_linear_solver_h
+#define softgrasp_mechanics_linear_solver_h
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <memory>
+#include <softgrasp/mechanics/solver_parameters.h>
+#include <vector>
+
+class Epetra_MultiVector;
+
+namespace softgrasp
+{
+  /**
+   * The linear solve of one Newton step on Trilinos matrices: sparse direct
+   * (Amesos KLU), or CG/GMRES preconditioned by Trilinos ML smoothed
+   * aggregation AMG whose near null space is the rigid-body modes of the
+   * body (3 in 2D, 6 in 3D), which keeps the iteration count of elasticity
+   * nearly independent of the mesh size.
+   */
+  class LinearSolver
+  {
+  public:
+    struct Result
+    {
+      bool         converged  = false;
+      unsigned int iterations = 0;
+      double       residual   = 0; ///< final Krylov residual norm
+    };
+
+    explicit LinearSolver(const LinearSolverParameters &parameters);
+    ~LinearSolver();
+
+    /**
+     * Set the near null space: each vector a rigid-body mode, with the
+     * parallel layout of the matrix. Without it, ML uses the constant
+     * modes of each of the @p n_components components.
+     */
+    void set_rigid_body_modes(
+        const std::vector<dealii::TrilinosWrappers::MPI::Vector> &modes);
+
+    /// Solve A x = b; @p symmetric selects CG over GMRES.
+    Result solve(const dealii::TrilinosWrappers::SparseMatrix &A,
+                 dealii::TrilinosWrappers::MPI::Vector        &x,
+                 const dealii::TrilinosWrappers::MPI::Vector  &b,
+                 const bool                                    symmetric);
+
+  private:
+    LinearSolverParameters                                   parameters;
+    std::vector<dealii::TrilinosWrappers::MPI::Vector>       modes;
+    std::unique_ptr<Epetra_MultiVector>                      null_space;
+  };
+} // namespace softgrasp
+
+#endif

@@ -1,0 +1,116 @@
+#ifndef softgrasp_mechanics_solid_system_h
+#define softgrasp_mechanics_solid_system_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <map>
+#include <softgrasp/mechanics/boundary_conditions.h>
+#include <softgrasp/mechanics/cell_assembler.h>
+#include <softgrasp/mechanics/linear_solver.h>
+#include <softgrasp/mechanics/solver_parameters.h>
+
+namespace softgrasp
+{
+  /**
+   * The discrete solid: degrees of freedom of the displacement (FE_Q^dim on
+   * a distributed triangulation), constraints, the Trilinos tangent matrix
+   * and vectors, and the WorkStream assembly over locally owned cells.
+   *
+   * Dirichlet conditions are imposed on the Newton increment as
+   * inhomogeneous constraints du = g(t) - u, rebuilt every iteration, so a
+   * boundary value reached only partially (after a line search) is
+   * completed by the next iteration.
+   */
+  template <int dim>
+  class SolidSystem
+  {
+  public:
+    struct AssemblyResult
+    {
+      bool        ok = true;       ///< false if an element inverted
+      std::string failed_cell;     ///< where, if !ok
+      double      failed_J = 0;    ///< the J found there
+      double      residual_norm = 0; ///< |f_int - f_ext| on free dofs (N)
+      double      force_scale   = 0; ///< max(|f_int|, |f_ext|) (N)
+    };
+
+    SolidSystem(dealii::parallel::distributed::Triangulation<dim> &tria,
+                const MaterialLibrary                             &materials,
+                const BoundaryConditions<dim>                     &bcs,
+                const SolverParameters                            &parameters,
+                const unsigned int                 mapping_degree,
+                dealii::TimerOutput               &timer);
+
+    /// Distribute dofs and size matrix and vectors (the solution is zeroed).
+    void setup();
+
+    /**
+     * Rebuild the constraints for the boundary values at the current time
+     * of the boundary conditions. Returns the largest |g - u| (m) at
+     * Dirichlet dofs, i.e. how far the boundary values are from reached.
+     */
+    double update_constraints();
+
+    /// Assemble f_int - f_ext (and the tangent) at the current solution.
+    AssemblyResult assemble(const bool with_matrix);
+
+    /// Solve K du = -r with the last assembled system; du obeys constraints.
+    LinearSolver::Result solve(dealii::TrilinosWrappers::MPI::Vector &du);
+
+    /// du . (f_ext - f_int) on free dofs, from the last assembly (N m).
+    double residual_dot(const dealii::TrilinosWrappers::MPI::Vector &du) const;
+
+    /// Reaction force f_int - f_ext (N) summed over each Dirichlet boundary.
+    std::map<dealii::types::boundary_id, dealii::Tensor<1, dim>>
+    reactions() const;
+
+    /// Displacement (m) at reference points; NaN where outside the mesh.
+    std::vector<dealii::Tensor<1, dim>>
+    point_displacements(const std::vector<dealii::Point<dim>> &points) const;
+
+    /// Make the ghosted copy agree with solution().
+    void update_ghosts();
+
+    dealii::TrilinosWrappers::MPI::Vector       &solution();
+    const dealii::TrilinosWrappers::MPI::Vector &ghosted_solution() const;
+    const dealii::DoFHandler<dim>               &dof_handler() const;
+    dealii::DoFHandler<dim>                     &dof_handler();
+    const dealii::Mapping<dim>                  &mapping() const;
+    const dealii::FiniteElement<dim>            &fe() const;
+    MPI_Comm                                     communicator() const;
+    dealii::types::global_dof_index              n_dofs() const;
+
+  private:
+    void compute_rigid_body_modes();
+
+    dealii::parallel::distributed::Triangulation<dim> &triangulation;
+    const MaterialLibrary                             &materials;
+    const BoundaryConditions<dim>                     &boundary_conditions;
+    const SolverParameters                            &parameters;
+    dealii::TimerOutput                               &timer;
+    const dealii::FESystem<dim>                        finite_element;
+    const dealii::MappingQ<dim>                        reference_mapping;
+    const dealii::QGauss<dim>                          quadrature;
+    const dealii::QGauss<dim - 1>                      face_quadrature;
+    dealii::DoFHandler<dim>                            dofs;
+    CellAssembler<dim>                                 assembler;
+    LinearSolver                                       linear_solver;
+
+    dealii::IndexSet                          owned, relevant;
+    dealii::AffineConstraints<double>         constraints;
+    dealii::AffineConstraints<double>         homogeneous_constraints;
+    dealii::TrilinosWrappers::SparseMatrix    tangent;
+    dealii::TrilinosWrappers::MPI::Vector     u, u_ghosted;
+    dealii::TrilinosWrappers::MPI::Vector     rhs, residual, f_int, f_ext;
+    std::vector<std::vector<dealii::IndexSet>> reaction_dofs; ///< [id][c]
+  };
+} // namespace softgrasp
+
+#endif

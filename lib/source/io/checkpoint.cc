@@ -1,0 +1,119 @@
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+#include <deal.II/distributed/solution_transfer.h>
+#include <filesystem>
+#include <fstream>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/io/checkpoint.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+  namespace fs = std::filesystem;
+
+  template <int dim>
+  Checkpoint<dim>::Checkpoint(std::string directory)
+      : directory(std::move(directory))
+  {
+  }
+
+  template <int dim>
+  void Checkpoint<dim>::save(
+      const parallel::distributed::Triangulation<dim> &tria,
+      const SolidSystem<dim>                          &system,
+      const RunState                                  &state) const
+  {
+    const MPI_Comm    comm     = system.communicator();
+    const bool        root     = Utilities::MPI::this_mpi_process(comm) == 0;
+    const std::string target   = directory + "/checkpoint";
+    const std::string partial  = directory + "/checkpoint.new";
+    const std::string previous = directory + "/checkpoint.old";
+    if (root)
+    {
+      fs::remove_all(partial);
+      fs::create_directories(partial);
+    }
+    MPI_Barrier(comm);
+
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+        transfer(system.dof_handler());
+    transfer.prepare_for_serialization(system.ghosted_solution());
+    // save() is const on the mesh data but not declared so.
+    const_cast<parallel::distributed::Triangulation<dim> &>(tria).save(
+        partial + "/mesh");
+
+    if (root)
+    {
+      {
+        std::ofstream                 out(partial + "/state.txt");
+        boost::archive::text_oarchive archive(out);
+        archive << state;
+      }
+      fs::remove_all(previous);
+      if (fs::exists(target))
+        fs::rename(target, previous);
+      fs::rename(partial, target);
+      fs::remove_all(previous);
+    }
+    MPI_Barrier(comm);
+  }
+
+  template <int dim>
+  std::string Checkpoint<dim>::complete_directory() const
+  {
+    for (const std::string name : {"/checkpoint", "/checkpoint.old"})
+      if (fs::exists(directory + name + "/state.txt"))
+        return directory + name;
+    return "";
+  }
+
+  template <int dim>
+  bool Checkpoint<dim>::exists() const
+  {
+    return !complete_directory().empty();
+  }
+
+  template <int dim>
+  RunState
+  Checkpoint<dim>::load(parallel::distributed::Triangulation<dim> &tria,
+                        SolidSystem<dim>                          &system) const
+  {
+    const std::string source = complete_directory();
+    if (source.empty())
+      throw InputError("'Checkpoint/Resume' is true but there is no "
+                       "checkpoint in '" +
+                       directory +
+                       "'. Fix: set 'Resume = false' to start from the "
+                       "beginning, or point 'Output/Directory' at the "
+                       "directory of the run to continue.");
+    RunState state;
+    {
+      std::ifstream                 in(source + "/state.txt");
+      boost::archive::text_iarchive archive(in);
+      archive >> state;
+    }
+    try
+    {
+      tria.load(source + "/mesh");
+    }
+    catch (const ExceptionBase &e)
+    {
+      throw InputError("The checkpoint in '" + source +
+                       "' does not fit this run's coarse mesh. Fix: resume "
+                       "with the same 'Mesh' and 'Finite element' settings "
+                       "as the run that wrote it.");
+    }
+    system.setup();
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+        transfer(system.dof_handler());
+    transfer.deserialize(system.solution());
+    system.update_ghosts();
+    return state;
+  }
+
+  template class Checkpoint<2>;
+  template class Checkpoint<3>;
+} // namespace softgrasp

@@ -1,0 +1,114 @@
+#include <deal.II/numerics/data_out.h>
+#include <iomanip>
+#include <softgrasp/base/atomic_file.h>
+#include <softgrasp/io/field_output.h>
+#include <softgrasp/postprocess/strain_postprocessor.h>
+#include <softgrasp/postprocess/stress_postprocessor.h>
+#include <sstream>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// DataOut whose patches are moved by a displacement field in its rows.
+    template <int dim>
+    class DeformedDataOut : public DataOut<dim>
+    {
+    public:
+      /// Add the dim rows starting at @p first_row to the point coordinates.
+      void deform(const unsigned int first_row)
+      {
+        for (auto &patch : this->patches)
+        {
+          const unsigned int n_rows = patch.data.n_rows();
+          const unsigned int n      = patch.n_subdivisions + 1;
+          for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
+          {
+            unsigned int index = 0, stride = 1;
+            for (unsigned int d = 0; d < dim; ++d, stride *= n)
+              index += ((v >> d) & 1) * (n - 1) * stride;
+            for (unsigned int d = 0; d < dim; ++d)
+              patch.vertices[v][d] += patch.data(first_row + d, index);
+          }
+          // Interior points are stored only for curved/high-order patches;
+          // otherwise the vertices alone define the geometry.
+          if (!patch.points_are_available)
+            continue;
+          for (unsigned int p = 0; p < patch.data.n_cols(); ++p)
+            for (unsigned int d = 0; d < dim; ++d)
+              patch.data(n_rows - dim + d, p) += patch.data(first_row + d, p);
+        }
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  FieldOutput<dim>::FieldOutput(std::string directory, std::string base_name)
+      : directory(std::move(directory))
+      , base_name(std::move(base_name))
+  {
+  }
+
+  template <int dim>
+  void FieldOutput<dim>::write(const SolidSystem<dim> &system,
+                               const MaterialLibrary  &materials,
+                               const double            time,
+                               const unsigned int      index)
+  {
+    const auto &dofs = system.dof_handler();
+    const auto &u    = system.ghosted_solution();
+    const MPI_Comm comm = system.communicator();
+
+    DeformedDataOut<dim> data_out;
+    data_out.attach_dof_handler(dofs);
+    data_out.add_data_vector(
+        u,
+        std::vector<std::string>(dim, "displacement"),
+        DataOut<dim>::type_dof_data,
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+            dim, DataComponentInterpretation::component_is_part_of_vector));
+    const StrainPostprocessor<dim> strains(0);
+    const StressPostprocessor<dim> stresses(materials, 0);
+    data_out.add_data_vector(u, strains);
+    data_out.add_data_vector(u, stresses);
+
+    const auto   &tria = dofs.get_triangulation();
+    Vector<float> material_id(tria.n_active_cells());
+    Vector<float> rank(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        material_id[cell->active_cell_index()] = cell->material_id();
+        rank[cell->active_cell_index()] = Utilities::MPI::this_mpi_process(comm);
+      }
+    data_out.add_data_vector(material_id, "material_id");
+    data_out.add_data_vector(rank, "mpi_rank");
+
+    const unsigned int degree = system.fe().degree;
+    data_out.build_patches(system.mapping(),
+                           degree,
+                           DataOut<dim>::curved_inner_cells);
+    data_out.deform(0);
+
+    std::ostringstream name;
+    name << base_name << "_" << std::setw(5) << std::setfill('0') << index
+         << ".vtu";
+    const std::string file = directory + "/" + name.str();
+    data_out.write_vtu_in_parallel(AtomicFile::temporary_name(file), comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      AtomicFile::commit(AtomicFile::temporary_name(file), file);
+      records.emplace_back(time, name.str());
+      std::ostringstream pvd;
+      DataOutBase::write_pvd_record(pvd, records);
+      AtomicFile::write(directory + "/" + base_name + ".pvd", pvd.str());
+    }
+    else
+      records.emplace_back(time, name.str());
+  }
+
+  template class FieldOutput<2>;
+  template class FieldOutput<3>;
+} // namespace softgrasp

@@ -1,0 +1,348 @@
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <softgrasp/base/plane_strain.h>
+#include <softgrasp/mechanics/cell_assembler.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const FEValuesExtractors::Vector displacement(0);
+
+    template <int dim>
+    SymmetricTensor<2, dim> restrict(const SymmetricTensor<2, 3> &t)
+    {
+      SymmetricTensor<2, dim> r;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          r[i][j] = t[i][j];
+      return r;
+    }
+
+    template <int dim>
+    SymmetricTensor<4, dim> restrict(const SymmetricTensor<4, 3> &t)
+    {
+      SymmetricTensor<4, dim> r;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = k; l < dim; ++l)
+              r[i][j][k][l] = t[i][j][k][l];
+      return r;
+    }
+
+    template <int dim>
+    Point<3> to_3d(const Point<dim> &p)
+    {
+      Point<3> r;
+      for (unsigned int d = 0; d < dim; ++d)
+        r[d] = p[d];
+      return r;
+    }
+  } // namespace
+
+  template <int dim>
+  AssemblyScratchData<dim>::AssemblyScratchData(
+      const Mapping<dim>        &mapping,
+      const FiniteElement<dim>  &fe,
+      const Quadrature<dim>     &quadrature,
+      const Quadrature<dim - 1> &face_quadrature)
+      : fe_values(mapping,
+                  fe,
+                  quadrature,
+                  update_values | update_gradients | update_quadrature_points |
+                      update_JxW_values)
+      , fe_face_values(mapping,
+                       fe,
+                       face_quadrature,
+                       update_values | update_gradients |
+                           update_quadrature_points | update_normal_vectors |
+                           update_JxW_values)
+      , grad_u(quadrature.size())
+      , J(quadrature.size())
+      , JxW(quadrature.size())
+      , grad_Nx(quadrature.size(),
+                std::vector<Tensor<2, dim>>(fe.n_dofs_per_cell()))
+      , dilatation(fe.degree - 1)
+  {
+  }
+
+  template <int dim>
+  AssemblyScratchData<dim>::AssemblyScratchData(const AssemblyScratchData &o)
+      : fe_values(o.fe_values.get_mapping(),
+                  o.fe_values.get_fe(),
+                  o.fe_values.get_quadrature(),
+                  o.fe_values.get_update_flags())
+      , fe_face_values(o.fe_face_values.get_mapping(),
+                       o.fe_face_values.get_fe(),
+                       o.fe_face_values.get_quadrature(),
+                       o.fe_face_values.get_update_flags())
+      , grad_u(o.grad_u)
+      , J(o.J)
+      , JxW(o.JxW)
+      , grad_Nx(o.grad_Nx)
+      , dilatation(o.dilatation)
+  {
+  }
+
+  template <int dim>
+  CellAssembler<dim>::CellAssembler(
+      const MaterialLibrary         &materials,
+      const BoundaryConditions<dim> &boundary_conditions,
+      const Formulation              formulation)
+      : materials(materials)
+      , boundary_conditions(boundary_conditions)
+      , formulation(formulation)
+  {
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::assemble(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const TrilinosWrappers::MPI::Vector                  &u,
+      const bool                                            with_matrix,
+      AssemblyScratchData<dim>                             &scratch,
+      AssemblyCopyData                                     &copy) const
+  {
+    const unsigned int n = cell->get_fe().n_dofs_per_cell();
+    copy.dof_indices.resize(n);
+    cell->get_dof_indices(copy.dof_indices);
+    copy.internal.reinit(n);
+    copy.external.reinit(n);
+    if (with_matrix)
+      copy.matrix.reinit(n, n);
+    copy.failed = false;
+
+    scratch.fe_values.reinit(cell);
+    try
+    {
+      assemble_volume(
+          u, materials.get(cell->material_id()), with_matrix, scratch, copy);
+      assemble_boundary(cell, u, with_matrix, scratch, copy);
+    }
+    catch (const InvertedMaterialState &e)
+    {
+      copy.failed   = true;
+      copy.failed_J = e.J;
+      std::ostringstream where;
+      where << "cell " << cell->id().to_string() << " (material id "
+            << static_cast<unsigned>(cell->material_id())
+            << ", centre at reference position " << cell->center() << " m)";
+      copy.failed_cell = where.str();
+      copy.internal    = 0;
+      copy.external    = 0;
+      if (with_matrix)
+        copy.matrix = 0;
+    }
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::assemble_volume(
+      const TrilinosWrappers::MPI::Vector &u,
+      const Material                      &material,
+      const bool                           with_matrix,
+      AssemblyScratchData<dim>            &scratch,
+      AssemblyCopyData                    &copy) const
+  {
+    const FEValues<dim>      &fe_values = scratch.fe_values;
+    const FiniteElement<dim> &fe        = fe_values.get_fe();
+    const unsigned int        n_q       = fe_values.n_quadrature_points;
+    const unsigned int        n         = fe.n_dofs_per_cell();
+    fe_values[displacement].get_function_gradients(u, scratch.grad_u);
+
+    for (unsigned int q = 0; q < n_q; ++q)
+    {
+      const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + scratch.grad_u[q];
+      scratch.J[q]           = determinant(F);
+      scratch.JxW[q]         = fe_values.JxW(q);
+      if (!(scratch.J[q] > 0) || !std::isfinite(scratch.J[q]))
+        throw InvertedMaterialState(scratch.J[q]);
+      const Tensor<2, dim> F_inv = invert(F);
+      for (unsigned int k = 0; k < n; ++k)
+        scratch.grad_Nx[q][k] = fe_values[displacement].gradient(k, q) * F_inv;
+    }
+
+    const bool mixed = formulation == Formulation::mixed_upJ;
+    if (mixed)
+      scratch.dilatation.reinit(fe_values.get_quadrature_points(),
+                                scratch.JxW,
+                                scratch.J,
+                                material.volumetric_energy());
+
+    const bool                           gravity = boundary_conditions.has_gravity();
+    Material::Response                   response;
+    std::vector<SymmetricTensor<2, dim>> sym(n);
+    std::vector<SymmetricTensor<2, dim>> Jc_sym(n);
+    for (unsigned int q = 0; q < n_q; ++q)
+    {
+      const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + scratch.grad_u[q];
+      const Point<dim>    &X = fe_values.quadrature_point(q);
+      const auto directions  = material.structural_directions(to_3d(X));
+      if (mixed)
+        material.evaluate_spatial_with_pressure(PlaneStrain::to_3d(F),
+                                                directions,
+                                                scratch.dilatation.pressure(q),
+                                                with_matrix,
+                                                response);
+      else
+        material.evaluate_spatial(
+            PlaneStrain::to_3d(F), directions, with_matrix, response);
+      const SymmetricTensor<2, dim> tau = restrict<dim>(response.stress);
+      const double                  JxW = scratch.JxW[q];
+
+      Tensor<1, dim> body_force;
+      if (gravity)
+        body_force = material.density() * boundary_conditions.gravity(X);
+
+      for (unsigned int k = 0; k < n; ++k)
+      {
+        sym[k] = symmetrize(scratch.grad_Nx[q][k]);
+        copy.internal[k] += (sym[k] * tau) * JxW;
+        if (gravity)
+        {
+          const unsigned int c = fe.system_to_component_index(k).first;
+          copy.external[k] += fe_values.shape_value(k, q) * body_force[c] * JxW;
+        }
+      }
+      if (!with_matrix)
+        continue;
+
+      const SymmetricTensor<4, dim> Jc = restrict<dim>(response.tangent);
+      for (unsigned int l = 0; l < n; ++l)
+        Jc_sym[l] = Jc * sym[l];
+      for (unsigned int k = 0; k < n; ++k)
+      {
+        const unsigned int ck = fe.system_to_component_index(k).first;
+        for (unsigned int l = 0; l <= k; ++l)
+        {
+          double value = sym[k] * Jc_sym[l];
+          if (fe.system_to_component_index(l).first == ck)
+          {
+            // geometric stiffness: grad N_k . tau . grad N_l (one component)
+            value += scratch.grad_Nx[q][k][ck] * (tau * scratch.grad_Nx[q][l][ck]);
+          }
+          copy.matrix(k, l) += value * JxW;
+        }
+      }
+    }
+
+    if (with_matrix && mixed)
+    {
+      // K_con = G^T A G, G_ak = int N_a J div_x N_k dV
+      const ElementDilatation<dim> &d  = scratch.dilatation;
+      const unsigned int            nb = d.n_basis();
+      FullMatrix<double>            G(nb, n);
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int k = 0; k < n; ++k)
+        {
+          const double div = trace(scratch.grad_Nx[q][k]);
+          for (unsigned int a = 0; a < nb; ++a)
+            G(a, k) += d.basis(a, q) * scratch.J[q] * div * scratch.JxW[q];
+        }
+      FullMatrix<double> AG(nb, n);
+      d.condensed_kernel().mmult(AG, G);
+      for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int l = 0; l <= k; ++l)
+        {
+          double value = 0;
+          for (unsigned int a = 0; a < nb; ++a)
+            value += G(a, k) * AG(a, l);
+          copy.matrix(k, l) += value;
+        }
+    }
+    if (with_matrix)
+      for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int l = k + 1; l < n; ++l)
+          copy.matrix(k, l) = copy.matrix(l, k);
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::assemble_boundary(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const TrilinosWrappers::MPI::Vector                  &u,
+      const bool                                            with_matrix,
+      AssemblyScratchData<dim>                             &scratch,
+      AssemblyCopyData                                     &copy) const
+  {
+    if (!cell->at_boundary())
+      return;
+    const auto &tractions = boundary_conditions.tractions;
+    const auto &pressures = boundary_conditions.pressures;
+    if (tractions.empty() && pressures.empty())
+      return;
+    FEFaceValues<dim>        &fe_face = scratch.fe_face_values;
+    const FiniteElement<dim> &fe      = fe_face.get_fe();
+    const unsigned int        n       = fe.n_dofs_per_cell();
+
+    for (const auto f : cell->face_indices())
+    {
+      if (!cell->face(f)->at_boundary())
+        continue;
+      const types::boundary_id id = cell->face(f)->boundary_id();
+      for (const auto &traction : tractions)
+      {
+        if (traction.boundary_id != id)
+          continue;
+        fe_face.reinit(cell, f);
+        for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+        {
+          const Point<dim> &X = fe_face.quadrature_point(q);
+          for (unsigned int k = 0; k < n; ++k)
+          {
+            const unsigned int c = fe.system_to_component_index(k).first;
+            copy.external[k] += fe_face.shape_value(k, q) *
+                                traction.traction->value(X, c) *
+                                fe_face.JxW(q);
+          }
+        }
+      }
+      for (const auto &pressure : pressures)
+      {
+        if (pressure.boundary_id != id)
+          continue;
+        fe_face.reinit(cell, f);
+        std::vector<Tensor<2, dim>> grad_u(fe_face.n_quadrature_points);
+        fe_face[displacement].get_function_gradients(u, grad_u);
+        for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+        {
+          const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + grad_u[q];
+          const double         J = determinant(F);
+          if (!(J > 0))
+            throw InvertedMaterialState(J);
+          const Tensor<2, dim> F_inv = invert(F);
+          const Tensor<1, dim> FinvT_N =
+              transpose(F_inv) * fe_face.normal_vector(q);
+          const double p   = pressure.pressure->value(fe_face.quadrature_point(q));
+          const double JxW = fe_face.JxW(q);
+          for (unsigned int k = 0; k < n; ++k)
+          {
+            const unsigned int c = fe.system_to_component_index(k).first;
+            copy.external[k] -= fe_face.shape_value(k, q) * p * J *
+                                FinvT_N[c] * JxW;
+          }
+          if (!with_matrix)
+            continue;
+          for (unsigned int l = 0; l < n; ++l)
+          {
+            const Tensor<2, dim> g =
+                fe_face[displacement].gradient(l, q) * F_inv;
+            const Tensor<1, dim> dforce =
+                p * J * (trace(g) * FinvT_N - transpose(g) * FinvT_N);
+            for (unsigned int k = 0; k < n; ++k)
+            {
+              const unsigned int c = fe.system_to_component_index(k).first;
+              copy.matrix(k, l) += fe_face.shape_value(k, q) * dforce[c] * JxW;
+            }
+          }
+        }
+      }
+    }
+  }
+
+  template struct AssemblyScratchData<2>;
+  template struct AssemblyScratchData<3>;
+  template class CellAssembler<2>;
+  template class CellAssembler<3>;
+} // namespace softgrasp

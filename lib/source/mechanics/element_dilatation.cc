@@ -1,0 +1,134 @@
+#include <cmath>
+#include <softgrasp/materials/material.h>
+#include <softgrasp/mechanics/element_dilatation.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  ElementDilatation<dim>::ElementDilatation(const unsigned int degree)
+      : degree(degree)
+      , n_functions(degree == 0 ? 1 : 1 + dim)
+      , kernel(n_functions, n_functions)
+  {
+  }
+
+  template <int dim>
+  void ElementDilatation<dim>::reinit(const std::vector<Point<dim>> &points,
+                                      const std::vector<double>     &JxW,
+                                      const std::vector<double>     &J,
+                                      const VolumetricEnergy        &energy)
+  {
+    n_points = points.size();
+    values.assign(n_functions * n_points, 1.0);
+    double volume = 0;
+    for (const double w : JxW)
+      volume += w;
+    if (degree > 0)
+    {
+      Point<dim> center;
+      for (unsigned int q = 0; q < n_points; ++q)
+        center += JxW[q] / volume * points[q];
+      const double h = std::pow(volume, 1.0 / dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int q = 0; q < n_points; ++q)
+          values[(1 + d) * n_points + q] = (points[q][d] - center[d]) / h;
+    }
+
+    // Mass matrix and its inverse.
+    FullMatrix<double> M(n_functions, n_functions);
+    Vector<double>     b(n_functions);
+    for (unsigned int q = 0; q < n_points; ++q)
+      for (unsigned int a = 0; a < n_functions; ++a)
+      {
+        b[a] += basis(a, q) * J[q] * JxW[q];
+        for (unsigned int c = 0; c < n_functions; ++c)
+          M(a, c) += basis(a, q) * basis(c, q) * JxW[q];
+      }
+    FullMatrix<double> M_inverse(n_functions, n_functions);
+    M_inverse.invert(M);
+
+    // J~ = Pi_h J
+    Vector<double> J_coefficients(n_functions);
+    M_inverse.vmult(J_coefficients, b);
+    J_tilde.assign(n_points, 0.0);
+    for (unsigned int q = 0; q < n_points; ++q)
+    {
+      for (unsigned int a = 0; a < n_functions; ++a)
+        J_tilde[q] += J_coefficients[a] * basis(a, q);
+      if (!(J_tilde[q] > 0) || !std::isfinite(J_tilde[q]))
+        throw InvertedMaterialState(J_tilde[q]);
+    }
+
+    // p~ = Pi_h U'(J~) and K_JJ
+    Vector<double>     c(n_functions);
+    FullMatrix<double> K_JJ(n_functions, n_functions);
+    for (unsigned int q = 0; q < n_points; ++q)
+    {
+      const double dU  = energy.first_derivative(J_tilde[q]);
+      const double d2U = energy.second_derivative(J_tilde[q]);
+      for (unsigned int a = 0; a < n_functions; ++a)
+      {
+        c[a] += basis(a, q) * dU * JxW[q];
+        for (unsigned int e = 0; e < n_functions; ++e)
+          K_JJ(a, e) += basis(a, q) * d2U * basis(e, q) * JxW[q];
+      }
+    }
+    Vector<double> p_coefficients(n_functions);
+    M_inverse.vmult(p_coefficients, c);
+    p_tilde.assign(n_points, 0.0);
+    p_mean = 0;
+    for (unsigned int q = 0; q < n_points; ++q)
+    {
+      for (unsigned int a = 0; a < n_functions; ++a)
+        p_tilde[q] += p_coefficients[a] * basis(a, q);
+      p_mean += p_tilde[q] * JxW[q] / volume;
+    }
+
+    // A = M^-1 K_JJ M^-1
+    FullMatrix<double> tmp(n_functions, n_functions);
+    M_inverse.mmult(tmp, K_JJ);
+    tmp.mmult(kernel, M_inverse);
+  }
+
+  template <int dim>
+  unsigned int ElementDilatation<dim>::n_basis() const
+  {
+    return n_functions;
+  }
+
+  template <int dim>
+  double ElementDilatation<dim>::basis(const unsigned int a,
+                                       const unsigned int q) const
+  {
+    return values[a * n_points + q];
+  }
+
+  template <int dim>
+  double ElementDilatation<dim>::pressure(const unsigned int q) const
+  {
+    return p_tilde[q];
+  }
+
+  template <int dim>
+  double ElementDilatation<dim>::dilatation(const unsigned int q) const
+  {
+    return J_tilde[q];
+  }
+
+  template <int dim>
+  double ElementDilatation<dim>::mean_pressure() const
+  {
+    return p_mean;
+  }
+
+  template <int dim>
+  const FullMatrix<double> &ElementDilatation<dim>::condensed_kernel() const
+  {
+    return kernel;
+  }
+
+  template class ElementDilatation<2>;
+  template class ElementDilatation<3>;
+} // namespace softgrasp

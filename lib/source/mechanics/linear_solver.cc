@@ -1,0 +1,98 @@
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <ml_MultiLevelPreconditioner.h>
+#include <softgrasp/mechanics/linear_solver.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
+      : parameters(parameters)
+  {
+  }
+
+  LinearSolver::~LinearSolver() = default;
+
+  void LinearSolver::set_rigid_body_modes(
+      const std::vector<TrilinosWrappers::MPI::Vector> &rigid_body_modes)
+  {
+    modes = rigid_body_modes;
+    null_space.reset();
+  }
+
+  LinearSolver::Result
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &b,
+                      const bool                            symmetric)
+  {
+    Result result;
+    x = 0;
+    if (parameters.type == LinearSolverType::direct)
+    {
+      SolverControl                    control(1, 0);
+      TrilinosWrappers::SolverDirect   direct(control);
+      direct.solve(A, x, b);
+      result.converged  = true;
+      result.iterations = 1;
+      return result;
+    }
+
+    // ML parameters (as deal.II's PreconditionAMG for elliptic problems),
+    // with the rigid-body modes as pre-computed near null space.
+    Teuchos::ParameterList ml;
+    ML_Epetra::SetDefaults("SA", ml);
+    ml.set("smoother: type", "Chebyshev");
+    ml.set("smoother: sweeps", static_cast<int>(parameters.smoother_sweeps));
+    ml.set("aggregation: type", "Uncoupled");
+    ml.set("aggregation: threshold", parameters.aggregation_threshold);
+    ml.set("coarse: type", "Amesos-KLU");
+    ml.set("coarse: max size", 2000);
+    ml.set("ML output", 0);
+    if (!modes.empty())
+    {
+      const Epetra_Map &map = A.trilinos_matrix().DomainMap();
+      null_space = std::make_unique<Epetra_MultiVector>(map, modes.size());
+      for (unsigned int m = 0; m < modes.size(); ++m)
+        for (int i = 0; i < map.NumMyElements(); ++i)
+          (*null_space)[m][i] = modes[m][map.GID(i)];
+      ml.set("null space: type", "pre-computed");
+      ml.set("null space: dimension", null_space->NumVectors());
+      ml.set("null space: vectors", null_space->Values());
+    }
+    TrilinosWrappers::PreconditionAMG preconditioner;
+    preconditioner.initialize(A, ml);
+
+    SolverControl control(parameters.max_iterations,
+                          parameters.relative_tolerance * b.l2_norm());
+    try
+    {
+      if (symmetric)
+      {
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        cg.solve(A, x, b, preconditioner);
+      }
+      else
+      {
+        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+            control,
+            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100));
+        gmres.solve(A, x, b, preconditioner);
+      }
+      result.converged = true;
+    }
+    catch (const SolverControl::NoConvergence &)
+    {
+      result.converged = false;
+    }
+    result.iterations = control.last_step();
+    result.residual   = control.last_value();
+    return result;
+  }
+} // namespace softgrasp

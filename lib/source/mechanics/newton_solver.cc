@@ -1,0 +1,125 @@
+#include <iomanip>
+#include <softgrasp/mechanics/newton_solver.h>
+#include <sstream>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  NewtonSolver<dim>::NewtonSolver(const NewtonParameters &parameters,
+                                  ConditionalOStream     &log)
+      : parameters(parameters)
+      , log(log)
+  {
+  }
+
+  template <int dim>
+  typename NewtonSolver<dim>::Result
+  NewtonSolver<dim>::solve(SolidSystem<dim> &system) const
+  {
+    Result result;
+    auto  &u = system.solution();
+    double violation = system.update_constraints();
+    auto   state     = system.assemble(false);
+    TrilinosWrappers::MPI::Vector du, u_start;
+
+    for (unsigned int it = 0;; ++it)
+    {
+      if (!state.ok)
+      {
+        std::ostringstream why;
+        why << "an element inverted (J = " << state.failed_J << ") in "
+            << state.failed_cell;
+        result.failure = why.str();
+        return result;
+      }
+      result.residuals.push_back(state.residual_norm);
+      const double tolerance =
+          std::max(parameters.relative_tolerance * state.force_scale,
+                   parameters.absolute_tolerance);
+      const double u_scale = std::max(u.linfty_norm(), 1e-300);
+      log << "    Newton " << std::setw(2) << it << ": |r| = "
+          << std::scientific << std::setprecision(3) << state.residual_norm
+          << " (tolerance " << tolerance << "), |g - u| = " << violation
+          << std::defaultfloat;
+      if (violation <= 1e-12 * u_scale && state.residual_norm <= tolerance)
+      {
+        log << "  converged" << std::endl;
+        result.converged  = true;
+        result.iterations = it;
+        return result;
+      }
+      if (it == parameters.max_iterations)
+      {
+        log << std::endl;
+        result.iterations = it;
+        result.failure    = "no convergence in " + std::to_string(it) +
+                         " Newton iterations";
+        return result;
+      }
+
+      const auto tangent_state = system.assemble(true);
+      if (!tangent_state.ok)
+      {
+        state = tangent_state;
+        continue; // reported at the top of the loop
+      }
+      const auto linear = system.solve(du);
+      result.linear_iterations += linear.iterations;
+      log << ", " << linear.iterations << " linear its";
+      if (!linear.converged)
+      {
+        log << std::endl;
+        std::ostringstream why;
+        why << "the linear solver did not converge in " << linear.iterations
+            << " iterations (residual " << linear.residual << ")";
+        result.failure = why.str();
+        return result;
+      }
+
+      // Line search on the energy slope s(alpha) = du . r(u + alpha du)
+      // (r = f_ext - f_int): the full step is taken when |s(1)| <= 0.8
+      // |s(0)|, otherwise alpha moves to the secant root of s; updates that
+      // invert an element are halved. Skipped while boundary values are
+      // being imposed (then r(u) is not the gradient along du).
+      u_start         = u;
+      const double s0 = system.residual_dot(du);
+      const bool   jump = violation > 1e-12 * u_scale;
+      double       alpha = 1.0;
+      for (unsigned int ls = 0;; ++ls)
+      {
+        u = u_start;
+        u.add(alpha, du);
+        violation = system.update_constraints();
+        state     = system.assemble(false);
+        if (!state.ok)
+        {
+          if (ls >= parameters.max_line_search_steps)
+            break;
+          alpha *= 0.5;
+          continue;
+        }
+        if (jump || !parameters.line_search || s0 <= 0 ||
+            ls >= parameters.max_line_search_steps)
+          break;
+        const double s = system.residual_dot(du);
+        if (std::abs(s) <= 0.8 * std::abs(s0))
+          break;
+        const double root =
+            (s0 - s) > 0 ? alpha * s0 / (s0 - s) : 0.5 * alpha;
+        const double next = std::min(1.0, std::max(0.1 * alpha, root));
+        if (std::abs(next - alpha) < 1e-3)
+          break;
+        alpha = next;
+      }
+      if (alpha < 1)
+        log << ", line search alpha = " << alpha;
+      log << std::endl;
+      result.iterations = it + 1;
+    }
+  }
+
+  template class NewtonSolver<2>;
+  template class NewtonSolver<3>;
+} // namespace softgrasp

@@ -1,0 +1,126 @@
+#include <deal.II/base/mpi.h>
+#include <fstream>
+#include <iostream>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/mechanics/quasi_static_program.h>
+#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <sstream>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void declare_dimension(ParameterHandler &prm)
+    {
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "Space dimension: 2 (plane strain; forces per metre "
+                        "of thickness) or 3. Unit: 1.");
+    }
+  } // namespace
+
+  unsigned int QuasiStaticProgram::read_dimension(const std::string &filename)
+  {
+    std::ifstream file(filename);
+    if (!file)
+      throw InputError("Cannot open the parameter file '" + filename +
+                       "'. Fix: check the path; it is read relative to the "
+                       "working directory.");
+    std::stringstream text;
+    text << file.rdbuf();
+    ParameterHandler prm;
+    declare_dimension(prm);
+    ParameterReader reader;
+    try
+    {
+      prm.parse_input_from_string(text.str(), "", true);
+    }
+    catch (const ExceptionBase &)
+    {
+      // reported with line numbers by the full read
+      reader.read_string(prm, text.str(), filename);
+    }
+    return prm.get_integer("Dimension");
+  }
+
+  template <int dim>
+  void QuasiStaticProgram::read_parameters(ParameterHandler  &prm,
+                                           const std::string &filename)
+  {
+    declare_dimension(prm);
+    QuasiStaticSolver<dim>::declare_parameters(prm);
+    ParameterReader reader;
+    QuasiStaticSolver<dim>::add_passes(reader);
+    reader.read_file(prm, filename);
+  }
+
+  int QuasiStaticProgram::run(int argc, char **argv) const
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+    bool           print_parameters = false;
+    std::string    filename         = default_parameter_file;
+    for (int i = 1; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      if (arg == "--print-parameters")
+        print_parameters = true;
+      else if (arg == "--help" || arg == "-h")
+      {
+        if (root)
+          std::cout << "Usage: " << argv[0]
+                    << " [--print-parameters] [file.prm]\n"
+                       "Default parameter file: "
+                    << default_parameter_file << std::endl;
+        return 0;
+      }
+      else
+        filename = arg;
+    }
+    try
+    {
+      if (print_parameters)
+      {
+        ParameterHandler prm;
+        declare_dimension(prm);
+        QuasiStaticSolver<2>::declare_parameters(prm);
+        if (root)
+          prm.print_parameters(std::cout, ParameterHandler::PRM);
+        return 0;
+      }
+      const unsigned int dim = read_dimension(filename);
+      ParameterHandler   prm;
+      if (dim == 2)
+      {
+        read_parameters<2>(prm, filename);
+        QuasiStaticSolver<2> solver(comm, prm);
+        solver.run();
+        if (report_2d)
+          report_2d(solver);
+      }
+      else
+      {
+        read_parameters<3>(prm, filename);
+        QuasiStaticSolver<3> solver(comm, prm);
+        solver.run();
+        if (report_3d)
+          report_3d(solver);
+      }
+    }
+    catch (const std::exception &e)
+    {
+      if (root)
+        std::cerr << "\nError: " << e.what() << std::endl;
+      return 1;
+    }
+    return 0;
+  }
+
+  template void QuasiStaticProgram::read_parameters<2>(ParameterHandler &,
+                                                       const std::string &);
+  template void QuasiStaticProgram::read_parameters<3>(ParameterHandler &,
+                                                       const std::string &);
+} // namespace softgrasp

@@ -1,0 +1,385 @@
+#include <deal.II/base/work_stream.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <limits>
+#include <softgrasp/mechanics/solid_system.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  SolidSystem<dim>::SolidSystem(
+      parallel::distributed::Triangulation<dim> &tria,
+      const MaterialLibrary                     &materials,
+      const BoundaryConditions<dim>             &bcs,
+      const SolverParameters                    &parameters,
+      const unsigned int                         mapping_degree,
+      TimerOutput                               &timer)
+      : triangulation(tria)
+      , materials(materials)
+      , boundary_conditions(bcs)
+      , parameters(parameters)
+      , timer(timer)
+      , finite_element(FE_Q<dim>(parameters.discretization.degree), dim)
+      , reference_mapping(mapping_degree)
+      , quadrature(parameters.discretization.degree + 1)
+      , face_quadrature(parameters.discretization.degree + 1)
+      , dofs(tria)
+      , assembler(materials, bcs, parameters.discretization.formulation)
+      , linear_solver(parameters.linear_solver)
+  {
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::setup()
+  {
+    TimerOutput::Scope scope(timer, "setup");
+    dofs.distribute_dofs(finite_element);
+    owned    = dofs.locally_owned_dofs();
+    relevant = DoFTools::extract_locally_relevant_dofs(dofs);
+    const MPI_Comm comm = communicator();
+
+    u.reinit(owned, comm);
+    u_ghosted.reinit(owned, relevant, comm);
+    for (auto *v : {&rhs, &residual, &f_int, &f_ext})
+      v->reinit(owned, relevant, comm, /*vector_writable=*/true);
+
+    update_constraints();
+    TrilinosWrappers::SparsityPattern sparsity(owned, owned, relevant, comm);
+    DoFTools::make_sparsity_pattern(dofs,
+                                    sparsity,
+                                    homogeneous_constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(comm));
+    sparsity.compress();
+    tangent.reinit(sparsity);
+
+    reaction_dofs.clear();
+    std::vector<IndexSet> component_dofs(dim);
+    for (unsigned int c = 0; c < dim; ++c)
+    {
+      ComponentMask mask(dim, false);
+      mask.set(c, true);
+      component_dofs[c] = DoFTools::extract_dofs(dofs, mask);
+    }
+    for (const auto id : boundary_conditions.reaction_boundary_ids())
+    {
+      const IndexSet boundary =
+          DoFTools::extract_boundary_dofs(dofs, ComponentMask(), {id}) & owned;
+      std::vector<IndexSet> per_component;
+      for (unsigned int c = 0; c < dim; ++c)
+        per_component.push_back(boundary & component_dofs[c]);
+      reaction_dofs.push_back(per_component);
+    }
+    if (parameters.linear_solver.type == LinearSolverType::iterative)
+      compute_rigid_body_modes();
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::compute_rigid_body_modes()
+  {
+    // Translations and rotations evaluated at the support points.
+    const unsigned int n_modes = dim == 2 ? 3 : 6;
+    std::vector<TrilinosWrappers::MPI::Vector> modes(
+        n_modes, TrilinosWrappers::MPI::Vector(owned, communicator()));
+    const Quadrature<dim> support(finite_element.get_unit_support_points());
+    FEValues<dim>         fe_values(reference_mapping,
+                            finite_element,
+                            support,
+                            update_quadrature_points);
+    std::vector<types::global_dof_index> indices(
+        finite_element.n_dofs_per_cell());
+    for (const auto &cell : dofs.active_cell_iterators())
+    {
+      if (!cell->is_locally_owned())
+        continue;
+      fe_values.reinit(cell);
+      cell->get_dof_indices(indices);
+      for (unsigned int k = 0; k < indices.size(); ++k)
+      {
+        if (!owned.is_element(indices[k]))
+          continue;
+        const unsigned int c = finite_element.system_to_component_index(k).first;
+        const Point<dim>  &x = fe_values.quadrature_point(k);
+        modes[c][indices[k]] = 1.0;
+        if (dim == 2)
+          modes[2][indices[k]] = (c == 0 ? -x[1] : x[0]);
+        else
+        {
+          // rotations about x, y, z: (0,-z,y), (z,0,-x), (-y,x,0)
+          const double rot[3][3] = {{0, -x[2], x[1]},
+                                    {x[2], 0, -x[0]},
+                                    {-x[1], x[0], 0}};
+          for (unsigned int r = 0; r < 3; ++r)
+            modes[3 + r][indices[k]] = rot[r][c];
+        }
+      }
+    }
+    for (auto &m : modes)
+      m.compress(VectorOperation::insert);
+    linear_solver.set_rigid_body_modes(modes);
+  }
+
+  template <int dim>
+  double SolidSystem<dim>::update_constraints()
+  {
+    update_ghosts();
+    constraints.clear();
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    homogeneous_constraints.clear();
+    homogeneous_constraints.reinit(relevant);
+    homogeneous_constraints.merge(constraints);
+
+    double violation = 0;
+    for (const auto &d : boundary_conditions.dirichlet)
+    {
+      std::map<types::global_dof_index, double> values;
+      VectorTools::interpolate_boundary_values(reference_mapping,
+                                               dofs,
+                                               d.boundary_id,
+                                               *d.displacement,
+                                               values,
+                                               d.components);
+      for (const auto &[index, g] : values)
+      {
+        if (constraints.is_constrained(index))
+          continue;
+        const double increment = g - u_ghosted[index];
+        constraints.add_line(index);
+        constraints.set_inhomogeneity(index, increment);
+        homogeneous_constraints.add_line(index);
+        if (owned.is_element(index))
+          violation = std::max(violation, std::abs(increment));
+      }
+    }
+    constraints.close();
+    homogeneous_constraints.close();
+    return Utilities::MPI::max(violation, communicator());
+  }
+
+  template <int dim>
+  typename SolidSystem<dim>::AssemblyResult
+  SolidSystem<dim>::assemble(const bool with_matrix)
+  {
+    TimerOutput::Scope scope(timer, with_matrix ? "assembly" : "residual");
+    update_ghosts();
+    if (with_matrix)
+    {
+      tangent = 0;
+      rhs     = 0;
+    }
+    residual = 0;
+    f_int    = 0;
+    f_ext    = 0;
+    AssemblyResult result;
+
+    using Iterator   = typename DoFHandler<dim>::active_cell_iterator;
+    using CellFilter = FilteredIterator<Iterator>;
+    auto worker    = [&](const Iterator           &cell,
+                      AssemblyScratchData<dim> &scratch,
+                      AssemblyCopyData         &copy) {
+      assembler.assemble(cell, u_ghosted, with_matrix, scratch, copy);
+    };
+    auto copier = [&](const AssemblyCopyData &copy) {
+      if (copy.failed)
+      {
+        if (result.ok)
+        {
+          result.ok          = false;
+          result.failed_cell = copy.failed_cell;
+          result.failed_J    = copy.failed_J;
+        }
+        return;
+      }
+      Vector<double> cell_rhs(copy.external);
+      cell_rhs -= copy.internal;
+      f_int.add(copy.dof_indices, copy.internal);
+      f_ext.add(copy.dof_indices, copy.external);
+      homogeneous_constraints.distribute_local_to_global(cell_rhs,
+                                                         copy.dof_indices,
+                                                         residual);
+      if (with_matrix)
+        constraints.distribute_local_to_global(
+            copy.matrix, cell_rhs, copy.dof_indices, tangent, rhs);
+    };
+    WorkStream::run(
+        CellFilter(IteratorFilters::LocallyOwnedCell(), dofs.begin_active()),
+        CellFilter(IteratorFilters::LocallyOwnedCell(), dofs.end()),
+        worker,
+        copier,
+        AssemblyScratchData<dim>(
+            reference_mapping, finite_element, quadrature, face_quadrature),
+        AssemblyCopyData());
+
+    if (with_matrix)
+    {
+      tangent.compress(VectorOperation::add);
+      rhs.compress(VectorOperation::add);
+    }
+    residual.compress(VectorOperation::add);
+    f_int.compress(VectorOperation::add);
+    f_ext.compress(VectorOperation::add);
+
+    // An inverted element anywhere fails the assembly on every rank.
+    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator());
+    const unsigned int failing_rank = Utilities::MPI::min(
+        result.ok ? std::numeric_limits<unsigned int>::max() : rank,
+        communicator());
+    if (failing_rank != std::numeric_limits<unsigned int>::max())
+    {
+      result.ok          = false;
+      result.failed_cell = Utilities::MPI::broadcast(
+          communicator(), result.failed_cell, failing_rank);
+      result.failed_J = Utilities::MPI::broadcast(
+          communicator(), result.failed_J, failing_rank);
+      return result;
+    }
+    result.residual_norm = residual.l2_norm();
+    result.force_scale   = std::max(f_int.l2_norm(), f_ext.l2_norm());
+    return result;
+  }
+
+  template <int dim>
+  LinearSolver::Result
+  SolidSystem<dim>::solve(TrilinosWrappers::MPI::Vector &du)
+  {
+    TimerOutput::Scope scope(timer, "linear solve");
+    du.reinit(owned, communicator());
+    const bool symmetric = !boundary_conditions.has_follower_loads();
+    const LinearSolver::Result result =
+        linear_solver.solve(tangent, du, rhs, symmetric);
+    constraints.distribute(du);
+    return result;
+  }
+
+  template <int dim>
+  double
+  SolidSystem<dim>::residual_dot(const TrilinosWrappers::MPI::Vector &du) const
+  {
+    return residual * du;
+  }
+
+  template <int dim>
+  std::map<types::boundary_id, Tensor<1, dim>> SolidSystem<dim>::reactions() const
+  {
+    std::map<types::boundary_id, Tensor<1, dim>> result;
+    const auto ids = boundary_conditions.reaction_boundary_ids();
+    for (unsigned int b = 0; b < ids.size(); ++b)
+    {
+      Tensor<1, dim> force;
+      for (unsigned int c = 0; c < dim; ++c)
+        for (const auto index : reaction_dofs[b][c])
+          force[c] += f_int[index] - f_ext[index];
+      result[ids[b]] = Utilities::MPI::sum(force, communicator());
+    }
+    return result;
+  }
+
+  template <int dim>
+  std::vector<Tensor<1, dim>> SolidSystem<dim>::point_displacements(
+      const std::vector<Point<dim>> &points) const
+  {
+    std::vector<Tensor<1, dim>> result;
+    for (const Point<dim> &p : points)
+    {
+      Tensor<1, dim> value;
+      double         found = 0;
+      try
+      {
+        const auto cell_and_point =
+            GridTools::find_active_cell_around_point(reference_mapping, dofs, p);
+        if (cell_and_point.first->is_locally_owned())
+        {
+          const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(
+              cell_and_point.second));
+          FEValues<dim> fe_values(reference_mapping, finite_element, q, update_values);
+          fe_values.reinit(cell_and_point.first);
+          std::vector<Tensor<1, dim>> u_q(1);
+          fe_values[FEValuesExtractors::Vector(0)].get_function_values(u_ghosted,
+                                                                       u_q);
+          value = u_q[0];
+          found = 1;
+        }
+      }
+      catch (...)
+      {
+        // not in this rank's part of the mesh
+      }
+      value       = Utilities::MPI::sum(value, communicator());
+      found       = Utilities::MPI::sum(found, communicator());
+      if (found > 0)
+        result.push_back(value / found);
+      else
+      {
+        Tensor<1, dim> nan;
+        for (unsigned int d = 0; d < dim; ++d)
+          nan[d] = std::numeric_limits<double>::quiet_NaN();
+        result.push_back(nan);
+      }
+    }
+    return result;
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::update_ghosts()
+  {
+    u_ghosted = u;
+  }
+
+  template <int dim>
+  TrilinosWrappers::MPI::Vector &SolidSystem<dim>::solution()
+  {
+    return u;
+  }
+
+  template <int dim>
+  const TrilinosWrappers::MPI::Vector &SolidSystem<dim>::ghosted_solution() const
+  {
+    return u_ghosted;
+  }
+
+  template <int dim>
+  const DoFHandler<dim> &SolidSystem<dim>::dof_handler() const
+  {
+    return dofs;
+  }
+
+  template <int dim>
+  DoFHandler<dim> &SolidSystem<dim>::dof_handler()
+  {
+    return dofs;
+  }
+
+  template <int dim>
+  const Mapping<dim> &SolidSystem<dim>::mapping() const
+  {
+    return reference_mapping;
+  }
+
+  template <int dim>
+  const FiniteElement<dim> &SolidSystem<dim>::fe() const
+  {
+    return finite_element;
+  }
+
+  template <int dim>
+  MPI_Comm SolidSystem<dim>::communicator() const
+  {
+    return triangulation.get_communicator();
+  }
+
+  template <int dim>
+  types::global_dof_index SolidSystem<dim>::n_dofs() const
+  {
+    return dofs.n_dofs();
+  }
+
+  template class SolidSystem<2>;
+  template class SolidSystem<3>;
+} // namespace softgrasp

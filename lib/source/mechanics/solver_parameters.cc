@@ -1,0 +1,304 @@
+#include <deal.II/base/utilities.h>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/mechanics/solver_parameters.h>
+#include <utility>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // One table per enum: the .prm spelling of each choice.
+    const std::vector<std::pair<std::string, Formulation>> formulation_names = {
+        {"displacement", Formulation::displacement},
+        {"mixed u-p-J", Formulation::mixed_upJ}};
+    const std::vector<std::pair<std::string, LinearSolverType>> solver_names = {
+        {"direct", LinearSolverType::direct},
+        {"iterative", LinearSolverType::iterative}};
+
+    template <typename Enum>
+    std::string
+    selection(const std::vector<std::pair<std::string, Enum>> &table)
+    {
+      std::string out;
+      for (const auto &entry : table)
+        out += (out.empty() ? "" : "|") + entry.first;
+      return out;
+    }
+
+    // Patterns::Selection has already validated the name.
+    template <typename Enum>
+    Enum lookup(const std::vector<std::pair<std::string, Enum>> &table,
+                const std::string                               &name)
+    {
+      for (const auto &entry : table)
+        if (entry.first == name)
+          return entry.second;
+      throw InputError("Unknown choice '" + name +
+                       "'. Fix: use one of: " + selection(table) + ".");
+    }
+  } // namespace
+
+  void DiscretizationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    prm.declare_entry("Polynomial degree",
+                      "2",
+                      Patterns::Integer(1, 2),
+                      "Degree of the displacement shape functions (Lagrange "
+                      "Q1 or Q2). Unit: 1.");
+    prm.declare_entry(
+        "Formulation",
+        "mixed u-p-J",
+        Patterns::Selection(selection(formulation_names)),
+        "'displacement': pure displacement (locks for Poisson's ratio near "
+        "0.5). 'mixed u-p-J': three-field formulation with element-wise "
+        "discontinuous pressure and dilatation of degree k-1, condensed per "
+        "element; free of volumetric locking.");
+    prm.leave_subsection();
+  }
+
+  void DiscretizationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    degree      = prm.get_integer("Polynomial degree");
+    formulation = lookup(formulation_names, prm.get("Formulation"));
+    prm.leave_subsection();
+  }
+
+  void TimeParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    prm.declare_entry("End time",
+                      "1",
+                      Patterns::Double(0),
+                      "Pseudo-time at the end of loading; the variable t in "
+                      "the load expressions runs from 0 to it. Unit: s.");
+    prm.declare_entry("Time step",
+                      "0.1",
+                      Patterns::Double(0),
+                      "Nominal load step. Unit: s.");
+    prm.declare_entry("Minimum time step",
+                      "1e-6",
+                      Patterns::Double(0),
+                      "A step that does not converge is halved; below this "
+                      "size the run stops and writes its last converged "
+                      "state. Unit: s.");
+    prm.declare_entry("Maximum cut-backs",
+                      "8",
+                      Patterns::Integer(0, 60),
+                      "How often one step may be halved. Unit: 1.");
+    prm.leave_subsection();
+  }
+
+  void TimeParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    const CheckedSection section(prm, "Time");
+    end_time      = section.get_positive("End time", "s");
+    step_size     = section.get_positive("Time step", "s");
+    minimum_step  = section.get_positive("Minimum time step", "s");
+    max_cut_backs = prm.get_integer("Maximum cut-backs");
+    if (minimum_step > step_size)
+      throw InputError("Parameter 'Time/Minimum time step' (" +
+                       std::to_string(minimum_step) +
+                       " s) exceeds 'Time/Time step' (" +
+                       std::to_string(step_size) +
+                       " s). Fix: make it smaller than the time step.");
+    prm.leave_subsection();
+  }
+
+  void NewtonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    prm.declare_entry("Maximum iterations",
+                      "15",
+                      Patterns::Integer(1),
+                      "Newton iterations per step before the step is cut "
+                      "back. Unit: 1.");
+    prm.declare_entry("Relative tolerance",
+                      "1e-8",
+                      Patterns::Double(0),
+                      "Converged when the residual norm is below this times "
+                      "the force scale (the larger of the internal and the "
+                      "external nodal force norms). Unit: 1.");
+    prm.declare_entry("Absolute tolerance",
+                      "1e-12",
+                      Patterns::Double(0),
+                      "Converged when the residual norm is below this. Unit: "
+                      "N (N/m in plane strain).");
+    prm.declare_entry("Line search",
+                      "true",
+                      Patterns::Bool(),
+                      "Backtracking line search on the residual norm; also "
+                      "halves steps that would invert an element.");
+    prm.declare_entry("Maximum line search steps",
+                      "6",
+                      Patterns::Integer(0, 30),
+                      "Halvings of one Newton update. Unit: 1.");
+    prm.leave_subsection();
+  }
+
+  void NewtonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    max_iterations        = prm.get_integer("Maximum iterations");
+    relative_tolerance    = prm.get_double("Relative tolerance");
+    absolute_tolerance    = prm.get_double("Absolute tolerance");
+    line_search           = prm.get_bool("Line search");
+    max_line_search_steps = prm.get_integer("Maximum line search steps");
+    prm.leave_subsection();
+  }
+
+  void LinearSolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Type",
+                      "iterative",
+                      Patterns::Selection(selection(solver_names)),
+                      "'direct': sparse LU (Amesos KLU), robust, for small "
+                      "problems. 'iterative': conjugate gradients (GMRES "
+                      "when follower pressure makes the tangent "
+                      "unsymmetric) preconditioned by Trilinos ML algebraic "
+                      "multigrid with the rigid-body modes as near null "
+                      "space.");
+    prm.declare_entry("Relative tolerance",
+                      "1e-8",
+                      Patterns::Double(0, 1),
+                      "Krylov stopping criterion relative to the right-hand "
+                      "side norm. Unit: 1.");
+    prm.declare_entry("Maximum iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "Krylov iterations before the Newton step counts as "
+                      "failed (and the load step is cut back). Unit: 1.");
+    prm.declare_entry("AMG aggregation threshold",
+                      "1e-4",
+                      Patterns::Double(0, 1),
+                      "ML aggregation drop tolerance. Unit: 1.");
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Patterns::Integer(1, 10),
+                      "Degree of the Chebyshev smoother of ML. Unit: 1.");
+    prm.leave_subsection();
+  }
+
+  void LinearSolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    type                  = lookup(solver_names, prm.get("Type"));
+    relative_tolerance    = prm.get_double("Relative tolerance");
+    max_iterations        = prm.get_integer("Maximum iterations");
+    aggregation_threshold = prm.get_double("AMG aggregation threshold");
+    smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    prm.leave_subsection();
+  }
+
+  void OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::FileName(Patterns::FileName::output),
+                      "Directory of all output files; created if missing.");
+    prm.declare_entry("Base name",
+                      "solution",
+                      Patterns::FileName(Patterns::FileName::output),
+                      "Prefix of the VTU, PVD and CSV files.");
+    prm.declare_entry("VTU interval",
+                      "1",
+                      Patterns::Integer(0),
+                      "Write the fields every n-th converged step (and "
+                      "always the last one); 0 writes the last one only. "
+                      "Unit: 1.");
+    prm.declare_entry("Monitor points",
+                      "",
+                      Patterns::Anything(),
+                      "Reference positions whose displacement is recorded "
+                      "in the history CSV, separated by ';', coordinates "
+                      "by ',', e.g. '0.048, 0.060; 0, 0'. Unit: m.");
+    prm.declare_entry("Verbose",
+                      "true",
+                      Patterns::Bool(),
+                      "Print every Newton iteration (residual, line search, "
+                      "linear iterations) besides the per-step progress.");
+    prm.leave_subsection();
+  }
+
+  void OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory    = prm.get("Directory");
+    base_name    = prm.get("Base name");
+    vtu_interval = prm.get_integer("VTU interval");
+    verbose      = prm.get_bool("Verbose");
+    monitor_points.clear();
+    for (const std::string &point :
+         Utilities::split_string_list(prm.get("Monitor points"), ';'))
+    {
+      std::vector<double> coordinates;
+      try
+      {
+        coordinates = Utilities::string_to_double(
+            Utilities::split_string_list(point, ','));
+      }
+      catch (...)
+      {
+        coordinates.clear();
+      }
+      if (coordinates.empty())
+        throw InputError("Parameter 'Output/Monitor points' has the entry '" +
+                         point +
+                         "', which is not a list of numbers. Fix: write "
+                         "points as 'x, y[, z]' separated by ';' (m).");
+      monitor_points.push_back(coordinates);
+    }
+    prm.leave_subsection();
+  }
+
+  void CheckpointParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpoint");
+    prm.declare_entry("Interval",
+                      "0",
+                      Patterns::Integer(0),
+                      "Write a checkpoint every n-th converged step into "
+                      "<Output directory>/checkpoint; 0 = never. Unit: 1.");
+    prm.declare_entry("Resume",
+                      "false",
+                      Patterns::Bool(),
+                      "Restart from the last checkpoint in the output "
+                      "directory instead of from the reference state.");
+    prm.leave_subsection();
+  }
+
+  void CheckpointParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpoint");
+    interval = prm.get_integer("Interval");
+    resume   = prm.get_bool("Resume");
+    prm.leave_subsection();
+  }
+
+  void SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    DiscretizationParameters::declare_parameters(prm);
+    TimeParameters::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
+    LinearSolverParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+    CheckpointParameters::declare_parameters(prm);
+  }
+
+  void SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    discretization.parse_parameters(prm);
+    time.parse_parameters(prm);
+    newton.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+    output.parse_parameters(prm);
+    checkpoint.parse_parameters(prm);
+  }
+} // namespace softgrasp

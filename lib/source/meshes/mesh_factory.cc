@@ -1,0 +1,177 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_generator.h>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/meshes/cook_membrane.h>
+#include <softgrasp/meshes/mesh_factory.h>
+#include <softgrasp/meshes/mesh_import.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const std::vector<std::pair<std::string, int>> type_names = {
+        {"block", 0}, {"Cook's membrane", 1}, {"ball", 2}, {"file", 3}};
+
+    template <int dim>
+    Point<dim> parse_point(const std::string &text, const std::string &path)
+    {
+      std::vector<double> values;
+      try
+      {
+        values =
+            Utilities::string_to_double(Utilities::split_string_list(text));
+      }
+      catch (...)
+      {
+      }
+      if (values.size() < dim)
+        throw InputError("Parameter '" + path + "' = '" + text +
+                         "' needs " + std::to_string(dim) +
+                         " comma-separated coordinates (m). Fix: give one "
+                         "number per coordinate.");
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = values[d];
+      return p;
+    }
+  } // namespace
+
+  template <int dim>
+  void MeshFactory<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Type",
+                      "block",
+                      Patterns::Selection("block|Cook's membrane|ball|file"),
+                      "Generated block, Cook's membrane or ball, or a mesh "
+                      "file (Gmsh .msh or Abaqus .inp).");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 10),
+                      "Uniform refinements of the coarse mesh. Unit: 1.");
+    prm.declare_entry("Material id",
+                      "0",
+                      Patterns::Integer(0, 254),
+                      "Material id of generated meshes (files carry their "
+                      "own). Unit: 1.");
+    prm.enter_subsection("Block");
+    prm.declare_entry("Lower corner", "0, 0, 0", Patterns::Anything(),
+                      "Corner with the smallest coordinates. Unit: m.");
+    prm.declare_entry("Upper corner", "0.01, 0.01, 0.01", Patterns::Anything(),
+                      "Corner with the largest coordinates. Unit: m.");
+    prm.declare_entry("Subdivisions", "2, 2, 2",
+                      Patterns::List(Patterns::Integer(1)),
+                      "Elements per direction before refinement. Unit: 1.");
+    prm.leave_subsection();
+    prm.enter_subsection("Cook's membrane");
+    prm.declare_entry("Elements per edge", "8", Patterns::Integer(1),
+                      "Elements along each edge of the membrane. Unit: 1.");
+    prm.declare_entry("Thickness", "0.001", Patterns::Double(0),
+                      "Out-of-plane thickness (3D only). Unit: m.");
+    prm.declare_entry("Layers", "1", Patterns::Integer(1),
+                      "Elements through the thickness (3D only). Unit: 1.");
+    prm.leave_subsection();
+    prm.enter_subsection("Ball");
+    prm.declare_entry("Center", "0, 0, 0", Patterns::Anything(),
+                      "Centre of the ball. Unit: m.");
+    prm.declare_entry("Radius", "0.04", Patterns::Double(0),
+                      "Radius of the ball. Unit: m.");
+    prm.leave_subsection();
+    prm.enter_subsection("File");
+    prm.declare_entry("File name", "", Patterns::Anything(),
+                      "Gmsh (.msh) or Abaqus (.inp) file, relative to the "
+                      "working directory.");
+    prm.declare_entry("Scale", "1", Patterns::Double(0),
+                      "Factor from the file's length unit to metres (1e-3 "
+                      "for millimetres). Unit: m per file unit.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void MeshFactory<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    const std::string name = prm.get("Type");
+    for (const auto &entry : type_names)
+      if (entry.first == name)
+        type = static_cast<Type>(entry.second);
+    global_refinements = prm.get_integer("Global refinements");
+    material_id = static_cast<types::material_id>(prm.get_integer("Material id"));
+    prm.enter_subsection("Block");
+    lower = parse_point<dim>(prm.get("Lower corner"), "Mesh/Block/Lower corner");
+    upper = parse_point<dim>(prm.get("Upper corner"), "Mesh/Block/Upper corner");
+    subdivisions.clear();
+    for (const std::string &s :
+         Utilities::split_string_list(prm.get("Subdivisions")))
+      subdivisions.push_back(Utilities::string_to_int(s));
+    subdivisions.resize(dim, subdivisions.empty() ? 1 : subdivisions.back());
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!(upper[d] > lower[d]) && type == Type::block)
+        throw InputError("Parameter 'Mesh/Block/Upper corner' must exceed "
+                         "'Lower corner' in every coordinate. Fix: swap or "
+                         "correct the corners (m).");
+    prm.leave_subsection();
+    prm.enter_subsection("Cook's membrane");
+    elements_per_edge = prm.get_integer("Elements per edge");
+    thickness         = prm.get_double("Thickness");
+    layers            = prm.get_integer("Layers");
+    prm.leave_subsection();
+    prm.enter_subsection("Ball");
+    center = parse_point<dim>(prm.get("Center"), "Mesh/Ball/Center");
+    radius = prm.get_double("Radius");
+    prm.leave_subsection();
+    prm.enter_subsection("File");
+    file_name = Utilities::trim(prm.get("File name"));
+    scale     = prm.get_double("Scale");
+    if (type == Type::file && file_name.empty())
+      throw InputError("Parameter 'Mesh/File name' is empty but 'Mesh/Type' "
+                       "is 'file'. Fix: name a .msh or .inp file.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void MeshFactory<dim>::create_coarse_mesh(
+      Triangulation<dim> &triangulation) const
+  {
+    switch (type)
+    {
+      case Type::block:
+        GridGenerator::subdivided_hyper_rectangle(
+            triangulation, subdivisions, lower, upper, true);
+        break;
+      case Type::cook_membrane:
+        Meshes::cook_membrane(
+            triangulation, elements_per_edge, thickness, layers);
+        break;
+      case Type::ball:
+        GridGenerator::hyper_ball_balanced(triangulation, center, radius);
+        break;
+      case Type::file:
+        Meshes::read_mesh_file(triangulation, file_name, scale);
+        return; // the file's material ids stay
+    }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      cell->set_material_id(material_id);
+  }
+
+  template <int dim>
+  void MeshFactory<dim>::refine(Triangulation<dim> &triangulation) const
+  {
+    if (global_refinements > 0)
+      triangulation.refine_global(global_refinements);
+  }
+
+  template <int dim>
+  bool MeshFactory<dim>::has_curved_boundary() const
+  {
+    return type == Type::ball;
+  }
+
+  template class MeshFactory<2>;
+  template class MeshFactory<3>;
+} // namespace softgrasp

@@ -1,0 +1,66 @@
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <filesystem>
+#include <fstream>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/meshes/mesh_import.h>
+#include <sstream>
+
+namespace softgrasp
+{
+  namespace Meshes
+  {
+    using namespace dealii;
+
+    template <int dim>
+    void read_mesh_file(Triangulation<dim> &triangulation,
+                        const std::string  &filename,
+                        const double        scale)
+    {
+      const std::string extension =
+          std::filesystem::path(filename).extension().string();
+      if (extension != ".msh" && extension != ".inp")
+        throw InputError("Mesh file '" + filename +
+                         "' has the extension '" + extension +
+                         "', which softgrasp cannot read. Fix: export the "
+                         "mesh as Gmsh (.msh) or Abaqus (.inp).");
+      std::ifstream in(filename);
+      if (!in)
+        throw InputError("Cannot open the mesh file '" + filename +
+                         "'. Fix: check 'Mesh/File name'; relative paths "
+                         "are read from the working directory.");
+      GridIn<dim> grid_in;
+      grid_in.attach_triangulation(triangulation);
+      try
+      {
+        if (extension == ".msh")
+          grid_in.read_msh(in);
+        else
+          grid_in.read_abaqus(in);
+      }
+      catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        throw InputError("The mesh file '" + filename +
+                         "' cannot be read as a " + std::to_string(dim) +
+                         "D " + (extension == ".msh" ? "Gmsh" : "Abaqus") +
+                         " mesh: " + info.str() +
+                         " Fix: check that the file is complete, of the "
+                         "right dimension, and contains only hexahedra "
+                         "(quadrilaterals in 2D).");
+      }
+      if (triangulation.n_active_cells() == 0)
+        throw InputError("The mesh file '" + filename +
+                         "' contains no cells. Fix: export the volume "
+                         "elements, not only the surface.");
+      if (scale != 1.0)
+        GridTools::scale(scale, triangulation);
+    }
+
+    template void
+    read_mesh_file(Triangulation<2> &, const std::string &, const double);
+    template void
+    read_mesh_file(Triangulation<3> &, const std::string &, const double);
+  } // namespace Meshes
+} // namespace softgrasp
