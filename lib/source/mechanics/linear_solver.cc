@@ -36,7 +36,7 @@ namespace softgrasp
     x = 0;
     if (parameters.type == LinearSolverType::direct)
     {
-      SolverControl                    control(1, 0);
+      SolverControl control(1, 0, false, false);
       TrilinosWrappers::SolverDirect   direct(control);
       direct.solve(A, x, b);
       result.converged  = true;
@@ -70,7 +70,9 @@ namespace softgrasp
     preconditioner.initialize(A, ml);
 
     SolverControl control(parameters.max_iterations,
-                          parameters.relative_tolerance * b.l2_norm());
+                          parameters.relative_tolerance * b.l2_norm(),
+                          false,
+                          false);
     try
     {
       if (symmetric)

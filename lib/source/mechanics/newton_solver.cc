@@ -23,6 +23,7 @@ namespace softgrasp
     double violation = system.update_constraints();
     auto   state     = system.assemble(false);
     TrilinosWrappers::MPI::Vector du, u_start;
+    double                        last_increment = 0; // max |alpha du| (m)
 
     for (unsigned int it = 0;; ++it)
     {
@@ -43,9 +44,16 @@ namespace softgrasp
           << std::scientific << std::setprecision(3) << state.residual_norm
           << " (tolerance " << tolerance << "), |g - u| = " << violation
           << std::defaultfloat;
-      if (violation <= 1e-12 * u_scale && state.residual_norm <= tolerance)
+      const bool increment_small =
+          it > 0 && last_increment <= parameters.increment_tolerance *
+                                          system.length_scale();
+      if (violation <= 1e-12 * u_scale &&
+          (state.residual_norm <= tolerance || increment_small))
       {
-        log << "  converged" << std::endl;
+        log << (increment_small && state.residual_norm > tolerance ?
+                    "  converged (update at round-off)" :
+                    "  converged")
+            << std::endl;
         result.converged  = true;
         result.iterations = it;
         return result;
@@ -113,6 +121,7 @@ namespace softgrasp
           break;
         alpha = next;
       }
+      last_increment = alpha * du.linfty_norm();
       if (alpha < 1)
         log << ", line search alpha = " << alpha;
       log << std::endl;

@@ -78,6 +78,32 @@ namespace softgrasp
     }
     if (parameters.linear_solver.type == LinearSolverType::iterative)
       compute_rigid_body_modes();
+
+    Point<dim> lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      lower[d] = std::numeric_limits<double>::max();
+      upper[d] = -std::numeric_limits<double>::max();
+    }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = std::min(lower[d], cell->vertex(v)[d]);
+            upper[d] = std::max(upper[d], cell->vertex(v)[d]);
+          }
+    domain_size = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      domain_size = std::max(domain_size,
+                             Utilities::MPI::max(upper[d], communicator()) +
+                                 Utilities::MPI::max(-lower[d], communicator()));
+  }
+
+  template <int dim>
+  double SolidSystem<dim>::length_scale() const
+  {
+    return domain_size;
   }
 
   template <int dim>

@@ -129,6 +129,13 @@ namespace softgrasp
                       Patterns::Double(0),
                       "Converged when the residual norm is below this. Unit: "
                       "N (N/m in plane strain).");
+    prm.declare_entry("Increment tolerance",
+                      "1e-12",
+                      Patterns::Double(0),
+                      "Also converged when the largest Newton update is "
+                      "below this times the size of the domain, i.e. the "
+                      "residual stagnates at round-off (stiff, nearly "
+                      "incompressible materials at rest). Unit: 1.");
     prm.declare_entry("Line search",
                       "true",
                       Patterns::Bool(),
@@ -147,6 +154,7 @@ namespace softgrasp
     max_iterations        = prm.get_integer("Maximum iterations");
     relative_tolerance    = prm.get_double("Relative tolerance");
     absolute_tolerance    = prm.get_double("Absolute tolerance");
+    increment_tolerance   = prm.get_double("Increment tolerance");
     line_search           = prm.get_bool("Line search");
     max_line_search_steps = prm.get_integer("Maximum line search steps");
     prm.leave_subsection();

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/meshes/cook_membrane.h>
@@ -57,6 +58,13 @@ namespace softgrasp
                       Patterns::Integer(0, 254),
                       "Material id of generated meshes (files carry their "
                       "own). Unit: 1.");
+    prm.declare_entry("Distortion",
+                      "0",
+                      Patterns::Double(0, 0.4),
+                      "Move every interior vertex of the coarse mesh by a "
+                      "random vector of up to this fraction of the adjacent "
+                      "edge length (deterministic seed); for patch tests of "
+                      "distorted elements. Unit: 1.");
     prm.enter_subsection("Block");
     prm.declare_entry("Lower corner", "0, 0, 0", Patterns::Anything(),
                       "Corner with the smallest coordinates. Unit: m.");
@@ -100,6 +108,7 @@ namespace softgrasp
       if (entry.first == name)
         type = static_cast<Type>(entry.second);
     global_refinements = prm.get_integer("Global refinements");
+    distortion         = prm.get_double("Distortion");
     material_id = static_cast<types::material_id>(prm.get_integer("Material id"));
     prm.enter_subsection("Block");
     lower = parse_point<dim>(prm.get("Lower corner"), "Mesh/Block/Lower corner");
@@ -153,10 +162,13 @@ namespace softgrasp
         break;
       case Type::file:
         Meshes::read_mesh_file(triangulation, file_name, scale);
-        return; // the file's material ids stay
+        break;
     }
-    for (const auto &cell : triangulation.active_cell_iterators())
-      cell->set_material_id(material_id);
+    if (type != Type::file) // files carry their own material ids
+      for (const auto &cell : triangulation.active_cell_iterators())
+        cell->set_material_id(material_id);
+    if (distortion > 0)
+      GridTools::distort_random(distortion, triangulation, true);
   }
 
   template <int dim>

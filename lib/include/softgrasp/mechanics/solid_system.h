@@ -75,6 +75,9 @@ namespace softgrasp
     std::vector<dealii::Tensor<1, dim>>
     point_displacements(const std::vector<dealii::Point<dim>> &points) const;
 
+    /// Largest extent (m) of the reference mesh's bounding box.
+    double length_scale() const;
+
     /// Make the ghosted copy agree with solution().
     void update_ghosts();
 
@@ -110,6 +113,7 @@ namespace softgrasp
     dealii::TrilinosWrappers::MPI::Vector     u, u_ghosted;
     dealii::TrilinosWrappers::MPI::Vector     rhs, residual, f_int, f_ext;
     std::vector<std::vector<dealii::IndexSet>> reaction_dofs; ///< [id][c]
+    double                                     domain_size = 1; ///< m
   };
 } // namespace softgrasp
 

@@ -55,6 +55,8 @@ namespace softgrasp
     /// converged when |r| <= max(relative * force scale, absolute); 1
     double relative_tolerance = 1e-8;
     double absolute_tolerance = 1e-12; ///< N (force per unit thickness in 2D)
+    /// also converged when max |du| <= this times the domain size; 1
+    double increment_tolerance = 1e-12;
     bool   line_search        = true;
     unsigned int max_line_search_steps = 6; ///< step halvings
 

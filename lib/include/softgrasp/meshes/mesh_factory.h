@@ -61,6 +61,7 @@ namespace softgrasp
     double      scale = 1.0; ///< file units to m
     // all
     unsigned int               global_refinements = 0;
+    double                     distortion         = 0; ///< of cell size, 1
     dealii::types::material_id material_id        = 0;
   };
 } // namespace softgrasp

@@ -1,0 +1,80 @@
+// Build a QuasiStaticSolver from the text of a parameter file, and the
+// parameter files of the benchmark problems used by several tests.
+#ifndef softgrasp_tests_solver_factory_h
+#define softgrasp_tests_solver_factory_h
+
+#include <memory>
+#include <softgrasp/base/parameter_reader.h>
+#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <sstream>
+#include <string>
+
+namespace softgrasp_tests
+{
+  template <int dim>
+  std::unique_ptr<softgrasp::QuasiStaticSolver<dim>>
+  make_solver(const std::string &text)
+  {
+    dealii::ParameterHandler prm;
+    softgrasp::QuasiStaticSolver<dim>::declare_parameters(prm);
+    softgrasp::ParameterReader reader;
+    softgrasp::QuasiStaticSolver<dim>::add_passes(reader);
+    reader.read_string(prm, text, "test parameters");
+    return std::make_unique<softgrasp::QuasiStaticSolver<dim>>(MPI_COMM_WORLD,
+                                                              prm);
+  }
+
+  /// Run a solver and return the last value of history column @p column.
+  template <int dim>
+  double run_and_get(const std::string &text, const std::string &column)
+  {
+    auto solver = make_solver<dim>(text);
+    solver->run();
+    const auto &history = solver->history();
+    return history.value(history.rows.size() - 1, column);
+  }
+
+  /**
+   * Cook's membrane with a neo-Hookean material (mu = 422.5 kPa, Simo-Taylor
+   * volumetric energy) and 1 N on the right edge; the corner (48, 60) mm is
+   * monitor point 0. In 3D: 1 mm thick, one element layer, front and back
+   * faces free; in 2D: plane strain.
+   */
+  inline std::string cook_membrane_prm(const unsigned int dim,
+                                       const unsigned int degree,
+                                       const unsigned int n,
+                                       const std::string &formulation,
+                                       const double       nu,
+                                       const std::string &linear_solver,
+                                       const std::string &directory)
+  {
+    const std::string zero = dim == 2 ? "0; 0" : "0; 0; 0";
+    std::ostringstream s;
+    s << "subsection Mesh\n set Type = Cook's membrane\n"
+      << " subsection Cook's membrane\n  set Elements per edge = " << n
+      << "\n  set Thickness = 0.001\n end\nend\n"
+      << "subsection Finite element\n set Polynomial degree = " << degree
+      << "\n set Formulation = " << formulation << "\nend\n"
+      << "subsection Materials\n set Material ids = 0\n"
+      << " subsection Material 0\n  set Model = neo-Hookean\n"
+      << "  set Density = 1000\n"
+      << "  subsection neo-Hookean\n   set Shear modulus = 422.5e3\n  end\n"
+      << "  subsection Volumetric\n   set Energy = Simo-Taylor\n"
+      << "   set Poisson's ratio = " << nu << "\n  end\n end\nend\n"
+      << "subsection Boundary conditions\n set Dirichlet boundary ids = 0\n"
+      << " set Traction boundary ids = 1\n"
+      << " subsection Dirichlet boundary 0\n  set Components = "
+      << (dim == 2 ? "x, y" : "x, y, z") << "\n  set Displacement = " << zero
+      << "\n end\n subsection Traction boundary 1\n  set Traction = 0; "
+      << "62.5e3 * t" << (dim == 3 ? "; 0" : "") << "\n end\nend\n"
+      << "subsection Time\n set End time = 1\n set Time step = 0.25\nend\n"
+      << "subsection Linear solver\n set Type = " << linear_solver << "\nend\n"
+      << "subsection Output\n set Directory = " << directory
+      << "\n set VTU interval = 0\n set Verbose = false\n"
+      << " set Monitor points = 0.048, 0.060" << (dim == 3 ? ", 0.001" : "")
+      << "\nend\n";
+    return s.str();
+  }
+} // namespace softgrasp_tests
+
+#endif
