@@ -320,7 +320,8 @@ namespace softgrasp
       {
         const auto cell_and_point =
             GridTools::find_active_cell_around_point(reference_mapping, dofs, p);
-        if (cell_and_point.first->is_locally_owned())
+        if (cell_and_point.first.state() == IteratorState::valid &&
+            cell_and_point.first->is_locally_owned())
         {
           const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(
               cell_and_point.second));

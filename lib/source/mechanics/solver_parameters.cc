@@ -166,7 +166,7 @@ namespace softgrasp
     prm.declare_entry("Type",
                       "iterative",
                       Patterns::Selection(selection(solver_names)),
-                      "'direct': sparse LU (Amesos KLU), robust, for small "
+                      "'direct': sparse LU (MUMPS through Amesos), robust, for small "
                       "problems. 'iterative': conjugate gradients (GMRES "
                       "when follower pressure makes the tangent "
                       "unsymmetric) preconditioned by Trilinos ML algebraic "

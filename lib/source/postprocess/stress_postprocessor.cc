@@ -1,3 +1,4 @@
+#include <limits>
 #include <deal.II/dofs/dof_handler.h>
 #include <softgrasp/base/plane_strain.h>
 #include <softgrasp/postprocess/principal_strains.h>
@@ -27,11 +28,22 @@ namespace softgrasp
       Tensor<2, dim> F = unit_symmetric_tensor<dim>();
       for (unsigned int i = 0; i < dim; ++i)
         F[i] += inputs.solution_gradients[q][first_component + i];
-      const SymmetricTensor<2, 3> sigma = material.cauchy_stress(
-          PlaneStrain::to_3d(F),
-          material.structural_directions(
-              PlaneStrain::to_3d(inputs.evaluation_points[q])));
       Vector<double> &out = computed_quantities[q];
+      SymmetricTensor<2, 3> sigma;
+      try
+      {
+        sigma = material.cauchy_stress(
+            PlaneStrain::to_3d(F),
+            material.structural_directions(
+                PlaneStrain::to_3d(inputs.evaluation_points[q])));
+      }
+      catch (const InvertedMaterialState &)
+      {
+        // An output point (not a quadrature point) of a strongly distorted
+        // higher-order element can have J <= 0; its stress is undefined.
+        out = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           out[i * dim + j] = sigma[i][j];

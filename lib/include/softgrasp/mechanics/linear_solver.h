@@ -13,7 +13,7 @@ namespace softgrasp
 {
   /**
    * The linear solve of one Newton step on Trilinos matrices: sparse direct
-   * (Amesos KLU), or CG/GMRES preconditioned by Trilinos ML smoothed
+   * (Amesos MUMPS), or CG/GMRES preconditioned by Trilinos ML smoothed
    * aggregation AMG whose near null space is the rigid-body modes of the
    * body (3 in 2D, 6 in 3D), which keeps the iteration count of elasticity
    * nearly independent of the mesh size.

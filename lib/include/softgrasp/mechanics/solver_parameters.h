@@ -22,7 +22,7 @@ namespace softgrasp
   /// Linear solver of each Newton step.
   enum class LinearSolverType
   {
-    direct,   ///< sparse direct (Amesos KLU); for small problems
+    direct,   ///< sparse direct (Amesos MUMPS); for small problems
     iterative ///< CG (GMRES with follower loads) + Trilinos ML AMG
   };
 
