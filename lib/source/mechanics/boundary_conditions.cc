@@ -44,6 +44,10 @@ namespace softgrasp
                              expressions,
                              {{"pi", numbers::PI}},
                              /*time_dependent=*/true);
+        // muParser compiles lazily: evaluate once so that errors surface
+        // now, not in the middle of a run.
+        for (unsigned int c = 0; c < n_components; ++c)
+          function->value(Point<dim>(), c);
       }
       catch (const ExceptionBase &e)
       {
