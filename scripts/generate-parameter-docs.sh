@@ -7,3 +7,6 @@ mkdir -p "$root/doc/parameters"
 "$root/build/examples/tissue_curves/tissue_curves" --print-parameters \
   > "$root/doc/parameters/tissue_curves.prm"
 echo "wrote doc/parameters/tissue_curves.prm"
+"$root/build/examples/cook_membrane/cook_membrane" --print-parameters \
+  > "$root/doc/parameters/quasi_static_solver.prm"
+echo "wrote doc/parameters/quasi_static_solver.prm"

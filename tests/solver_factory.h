@@ -21,7 +21,7 @@ namespace softgrasp_tests
     softgrasp::QuasiStaticSolver<dim>::add_passes(reader);
     reader.read_string(prm, text, "test parameters");
     return std::make_unique<softgrasp::QuasiStaticSolver<dim>>(MPI_COMM_WORLD,
-                                                              prm);
+                                                               prm);
   }
 
   /// Run a solver and return the last value of history column @p column.
@@ -48,7 +48,7 @@ namespace softgrasp_tests
                                        const std::string &linear_solver,
                                        const std::string &directory)
   {
-    const std::string zero = dim == 2 ? "0; 0" : "0; 0; 0";
+    const std::string  zero = dim == 2 ? "0; 0" : "0; 0; 0";
     std::ostringstream s;
     s << "subsection Mesh\n set Type = Cook's membrane\n"
       << " subsection Cook's membrane\n  set Elements per edge = " << n

@@ -33,13 +33,15 @@
 #include <softgrasp/mechanics/quasi_static_program.h>
 #include <softgrasp/mechanics/quasi_static_solver.h>
 
-int main(int argc, char **argv)
+int
+main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   softgrasp::QuasiStaticProgram program;
   program.default_parameter_file = "block_compression.prm";
-  program.report_3d = [](const softgrasp::QuasiStaticSolver<3> &solver) {
+  program.report_3d = [](const softgrasp::QuasiStaticSolver<3> &solver)
+  {
     const auto       &history = solver.history();
     const std::size_t last    = history.rows.size() - 1;
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)

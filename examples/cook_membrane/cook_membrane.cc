@@ -34,12 +34,13 @@
 // Print the vertical displacement of the monitored corner next to a
 // reference value (m).
 template <int dim>
-void report_tip_displacement(const softgrasp::QuasiStaticSolver<dim> &solver,
-                             const double                            reference,
-                             const std::string                      &label)
+void
+report_tip_displacement(const softgrasp::QuasiStaticSolver<dim> &solver,
+                        const double                             reference,
+                        const std::string                       &label)
 {
-  const auto       &history = solver.history();
-  const double      uy      = history.value(history.rows.size() - 1, "u0_y");
+  const auto  &history = solver.history();
+  const double uy      = history.value(history.rows.size() - 1, "u0_y");
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::cout << "\nVertical displacement of the corner (48, 60) mm: "
               << uy * 1e3 << " mm; " << label << ": " << reference * 1e3
@@ -47,7 +48,8 @@ void report_tip_displacement(const softgrasp::QuasiStaticSolver<dim> &solver,
               << " %." << std::endl;
 }
 
-int main(int argc, char **argv)
+int
+main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
@@ -62,7 +64,8 @@ int main(int argc, char **argv)
   program.report_2d = [](const softgrasp::QuasiStaticSolver<2> &solver) {
     report_tip_displacement(solver, 13.77e-3, "converged plane-strain value");
   };
-  program.report_3d = [](const softgrasp::QuasiStaticSolver<3> &solver) {
+  program.report_3d = [](const softgrasp::QuasiStaticSolver<3> &solver)
+  {
     report_tip_displacement(
         solver,
         solver.parameters().discretization.degree == 2 ? 14.33e-3 : 14.32e-3,

@@ -7,19 +7,20 @@
 //  - when the cut-backs run out, the run stops with the step, time and
 //    residual history, after writing the last converged state (VTU and
 //    checkpoint).
+#include "../solver_factory.h"
+#include "../tests.h"
+
 #include <filesystem>
 #include <fstream>
 #include <softgrasp/base/input_error.h>
 
-#include "../solver_factory.h"
-#include "../tests.h"
-
 using namespace softgrasp_tests;
 
-std::string block_prm(const std::string &mesh,
-                      const std::string &extra,
-                      const double       compression,
-                      const std::string &directory)
+std::string
+block_prm(const std::string &mesh,
+          const std::string &extra,
+          const double       compression,
+          const std::string &directory)
 {
   std::ostringstream s;
   s << "subsection Mesh\n"
@@ -41,9 +42,10 @@ std::string block_prm(const std::string &mesh,
 }
 
 template <typename Exception>
-void expect_error(const std::string              &what,
-                  const std::string              &prm,
-                  const std::vector<std::string> &phrases)
+void
+expect_error(const std::string              &what,
+             const std::string              &prm,
+             const std::vector<std::string> &phrases)
 {
   try
   {
@@ -64,7 +66,8 @@ void expect_error(const std::string              &what,
   SG_CHECK(false, what + ": no error was raised");
 }
 
-int main(int argc, char **argv)
+int
+main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
@@ -75,13 +78,17 @@ int main(int argc, char **argv)
       "missing mesh file",
       block_prm("set Type = file\nsubsection File\n set File name = "
                 "nowhere.msh\nend",
-                "", 0.1, "out-bad"),
+                "",
+                0.1,
+                "out-bad"),
       {"Cannot open the mesh file 'nowhere.msh'", "Fix:"});
   expect_error<InputError>(
       "unsupported mesh format",
       block_prm("set Type = file\nsubsection File\n set File name = "
                 "mesh.stl\nend",
-                "", 0.1, "out-bad"),
+                "",
+                0.1,
+                "out-bad"),
       {"extension '.stl'", "Gmsh (.msh) or Abaqus (.inp)"});
   {
     std::ofstream("broken.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
@@ -91,54 +98,61 @@ int main(int argc, char **argv)
       "truncated Gmsh file",
       block_prm("set Type = file\nsubsection File\n set File name = "
                 "broken.msh\nend",
-                "", 0.1, "out-bad"),
+                "",
+                0.1,
+                "out-bad"),
       {"The mesh file 'broken.msh' cannot be read", "Fix:"});
-  expect_error<InputError>("unmapped material id",
-                           block_prm("set Type = block\nset Material id = 3",
-                                     "", 0.1, "out-bad"),
-                           {"3", "Materials"});
+  expect_error<InputError>(
+      "unmapped material id",
+      block_prm("set Type = block\nset Material id = 3", "", 0.1, "out-bad"),
+      {"3", "Materials"});
   expect_error<InputError>(
       "broken load expression",
       block_prm("set Type = block",
                 "subsection Boundary conditions\n subsection Dirichlet "
                 "boundary 4\n  set Displacement = 0; 0; sin(\n end\nend\n",
-                0.1, "out-bad"),
+                0.1,
+                "out-bad"),
       {"Boundary conditions/Dirichlet boundary 4/Displacement", "Fix:"});
-  expect_error<InputError>("misspelled entry",
-                           block_prm("set Type = block\nset Global refinement = 1",
-                                     "", 0.1, "out-bad"),
-                           {"Global refinement", "Fix:"});
+  expect_error<InputError>(
+      "misspelled entry",
+      block_prm(
+          "set Type = block\nset Global refinement = 1", "", 0.1, "out-bad"),
+      {"Global refinement", "Fix:"});
   expect_error<InputError>(
       "monitor point in 2 coordinates",
       block_prm("set Type = block",
                 "subsection Output\n set Monitor points = 0.01, 0.01\nend\n",
-                0.1, "out-bad"),
+                0.1,
+                "out-bad"),
       {"Output/Monitor points", "3 coordinates"});
   expect_error<InputError>(
       "resume without checkpoint",
       block_prm("set Type = block",
-                "subsection Checkpoint\n set Resume = true\nend\n", 0.1,
+                "subsection Checkpoint\n set Resume = true\nend\n",
+                0.1,
                 "out-empty"),
       {"no checkpoint", "Resume = false"});
 
   // 60 % compression in one step does not converge in 3 Newton iterations;
   // halving the step does.
   {
-    auto solver = make_solver<3>(block_prm(
-        "set Type = block",
-        "subsection Newton\n set Maximum iterations = 3\nend\n",
-        0.6,
-        "out-cut"));
+    auto solver = make_solver<3>(
+        block_prm("set Type = block",
+                  "subsection Newton\n set Maximum iterations = 3\nend\n",
+                  0.6,
+                  "out-cut"));
     solver->run();
-    const auto  &history   = solver->history();
-    double       cut_backs = 0;
+    const auto &history   = solver->history();
+    double      cut_backs = 0;
     for (std::size_t r = 0; r < history.rows.size(); ++r)
       cut_backs += history.value(r, "cut_backs");
     dealii::deallog << "60 % compression in one step: converged after "
                     << cut_backs << " cut-back(s) in "
                     << history.rows.size() - 1 << " steps" << std::endl;
     SG_CHECK(cut_backs > 0, "the step was cut back");
-    SG_CHECK(std::abs(history.value(history.rows.size() - 1, "time") - 1) < 1e-12,
+    SG_CHECK(std::abs(history.value(history.rows.size() - 1, "time") - 1) <
+                 1e-12,
              "the run reaches the end time");
   }
 
@@ -151,8 +165,7 @@ int main(int argc, char **argv)
                 "subsection Newton\n set Maximum iterations = 3\nend\n",
                 0.6,
                 "out-stop"),
-      {"Step 1 (t = 1 s", "Residual history", "last converged state",
-       "Fix:"});
+      {"Step 1 (t = 1 s", "Residual history", "last converged state", "Fix:"});
   SG_CHECK(std::filesystem::exists("out-stop/checkpoint/state.txt"),
            "a checkpoint of the last converged state exists");
   SG_CHECK(std::filesystem::exists("out-stop/solution_00000.vtu"),

@@ -9,14 +9,15 @@
 
 using namespace softgrasp_tests;
 
-double tip(const unsigned int degree,
-           const unsigned int n,
-           const std::string &formulation,
-           const double       nu)
+double
+tip(const unsigned int degree,
+    const unsigned int n,
+    const std::string &formulation,
+    const double       nu)
 {
   const double uy = run_and_get<2>(
-      cook_membrane_prm(2, degree, n, formulation, nu, "direct",
-                        "output-cook-locking"),
+      cook_membrane_prm(
+          2, degree, n, formulation, nu, "direct", "output-cook-locking"),
       "u0_y");
   dealii::deallog << "nu = " << nu << ", Q" << degree << " " << formulation
                   << ", " << n << " elements per edge: tip u_y = " << uy * 1e3
@@ -24,7 +25,8 @@ double tip(const unsigned int degree,
   return uy;
 }
 
-int main(int argc, char **argv)
+int
+main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(5);

@@ -11,12 +11,13 @@
 
 using namespace softgrasp_tests;
 
-int main(int argc, char **argv)
+int
+main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(6);
 
-  const std::string prm = R"(
+  const std::string prm    = R"(
 subsection Mesh
   set Type = block
   set Global refinements = 1
@@ -68,13 +69,19 @@ subsection Output
   set Monitor points = 0.02, 0.02, 0.01; 0.01, 0.01, 0.01
 end
 )";
-  auto solver = make_solver<3>(prm);
+  auto              solver = make_solver<3>(prm);
   solver->run();
   const auto       &history = solver->history();
   const std::size_t last    = history.rows.size() - 1;
-  for (const std::string column :
-       {"reaction_4_x", "reaction_4_y", "reaction_4_z", "u0_x", "u0_y",
-        "u0_z", "u1_x", "u1_y", "u1_z"})
+  for (const std::string column : {"reaction_4_x",
+                                   "reaction_4_y",
+                                   "reaction_4_z",
+                                   "u0_x",
+                                   "u0_y",
+                                   "u0_z",
+                                   "u1_x",
+                                   "u1_y",
+                                   "u1_z"})
     dealii::deallog << column << " = " << history.value(last, column)
                     << std::endl;
   dealii::deallog << "dofs: " << solver->system().n_dofs() << std::endl;

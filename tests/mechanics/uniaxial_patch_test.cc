@@ -7,15 +7,16 @@
 //  - the lateral displacements equal (lambda_2 - 1) W and (lambda_3 - 1) H.
 // All isotropic models and a fibre-reinforced HGO material (fibres along
 // x), in the displacement and mixed u-p-J formulations, Q1 and Q2.
-#include <softgrasp/materials/homogeneous_loading.h>
-
 #include "../material_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
 
+#include <softgrasp/materials/homogeneous_loading.h>
+
 using namespace softgrasp_tests;
 
-int main(int argc, char **argv)
+int
+main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(8);
@@ -34,8 +35,8 @@ int main(int argc, char **argv)
 
   for (const auto &[name, fragment] : materials)
   {
-    const auto  material = material_from_prm(fragment);
-    const auto  exact    = softgrasp::HomogeneousLoading::uniaxial(
+    const auto material = material_from_prm(fragment);
+    const auto exact    = softgrasp::HomogeneousLoading::uniaxial(
         *material, material->structural_directions({}), stretch);
     for (const std::string formulation : {"displacement", "mixed u-p-J"})
       for (const unsigned int degree : {1u, 2u})
@@ -58,7 +59,8 @@ int main(int argc, char **argv)
             << " subsection Dirichlet boundary 1\n  set Components = x\n"
             << "  set Displacement = " << (stretch - 1) * L << " * t; 0; 0\n"
             << " end\nend\n"
-            << "subsection Time\n set End time = 1\n set Time step = 0.25\nend\n"
+            << "subsection Time\n set End time = 1\n set Time step = "
+               "0.25\nend\n"
             << "subsection Newton\n set Relative tolerance = 1e-12\nend\n"
             << "subsection Linear solver\n set Type = direct\nend\n"
             << "subsection Output\n set Directory = output-patch\n"
@@ -67,20 +69,19 @@ int main(int argc, char **argv)
             << "\nend\n";
         auto solver = make_solver<3>(prm.str());
         solver->run();
-        const auto       &history = solver->history();
-        const std::size_t last    = history.rows.size() - 1;
-        const double      force   = history.value(last, "reaction_1_x");
-        const double      uy      = history.value(last, "u0_y");
-        const double      uz      = history.value(last, "u0_z");
+        const auto       &history  = solver->history();
+        const std::size_t last     = history.rows.size() - 1;
+        const double      force    = history.value(last, "reaction_1_x");
+        const double      uy       = history.value(last, "u0_y");
+        const double      uz       = history.value(last, "u0_z");
         const double      expected = exact.nominal_stress * W * H;
         const double      e_force  = std::abs(force - expected) / expected;
         const double      e_y = std::abs(uy - (exact.stretches[1] - 1) * W) / W;
         const double      e_z = std::abs(uz - (exact.stretches[2] - 1) * H) / H;
         dealii::deallog << name << ", Q" << degree << " " << formulation
                         << ": F = " << force << " N (exact " << expected
-                        << " N), lateral stretch "
-                        << 1 + uy / W << " (exact " << exact.stretches[1]
-                        << ")" << std::endl;
+                        << " N), lateral stretch " << 1 + uy / W << " (exact "
+                        << exact.stretches[1] << ")" << std::endl;
         SG_CHECK(e_force < 1e-9, "reaction force equals P_11 A_0");
         SG_CHECK(e_y < 1e-9 && e_z < 1e-9, "lateral contraction exact");
       }

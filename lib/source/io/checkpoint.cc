@@ -21,10 +21,10 @@ namespace softgrasp
   }
 
   template <int dim>
-  void Checkpoint<dim>::save(
-      const parallel::distributed::Triangulation<dim> &tria,
-      const SolidSystem<dim>                          &system,
-      const RunState                                  &state) const
+  void
+  Checkpoint<dim>::save(const parallel::distributed::Triangulation<dim> &tria,
+                        const SolidSystem<dim>                          &system,
+                        const RunState &state) const
   {
     const MPI_Comm    comm     = system.communicator();
     const bool        root     = Utilities::MPI::this_mpi_process(comm) == 0;
@@ -42,8 +42,8 @@ namespace softgrasp
         transfer(system.dof_handler());
     transfer.prepare_for_serialization(system.ghosted_solution());
     // save() is const on the mesh data but not declared so.
-    const_cast<parallel::distributed::Triangulation<dim> &>(tria).save(
-        partial + "/mesh");
+    const_cast<parallel::distributed::Triangulation<dim> &>(tria).save(partial +
+                                                                       "/mesh");
 
     if (root)
     {
@@ -61,8 +61,7 @@ namespace softgrasp
     MPI_Barrier(comm);
   }
 
-  template <int dim>
-  std::string Checkpoint<dim>::complete_directory() const
+  template <int dim> std::string Checkpoint<dim>::complete_directory() const
   {
     for (const std::string name : {"/checkpoint", "/checkpoint.old"})
       if (fs::exists(directory + name + "/state.txt"))
@@ -70,8 +69,7 @@ namespace softgrasp
     return "";
   }
 
-  template <int dim>
-  bool Checkpoint<dim>::exists() const
+  template <int dim> bool Checkpoint<dim>::exists() const
   {
     return !complete_directory().empty();
   }

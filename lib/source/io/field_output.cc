@@ -13,8 +13,7 @@ namespace softgrasp
   namespace
   {
     /// DataOut whose patches are moved by a displacement field in its rows.
-    template <int dim>
-    class DeformedDataOut : public DataOut<dim>
+    template <int dim> class DeformedDataOut : public DataOut<dim>
     {
     public:
       /// Add the dim rows starting at @p first_row to the point coordinates.
@@ -24,7 +23,8 @@ namespace softgrasp
         {
           const unsigned int n_rows = patch.data.n_rows();
           const unsigned int n      = patch.n_subdivisions + 1;
-          for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
+          for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell;
+               ++v)
           {
             unsigned int index = 0, stride = 1;
             for (unsigned int d = 0; d < dim; ++d, stride *= n)
@@ -57,8 +57,8 @@ namespace softgrasp
                                const double            time,
                                const unsigned int      index)
   {
-    const auto &dofs = system.dof_handler();
-    const auto &u    = system.ghosted_solution();
+    const auto    &dofs = system.dof_handler();
+    const auto    &u    = system.ghosted_solution();
     const MPI_Comm comm = system.communicator();
 
     DeformedDataOut<dim> data_out;
@@ -81,15 +81,15 @@ namespace softgrasp
       if (cell->is_locally_owned())
       {
         material_id[cell->active_cell_index()] = cell->material_id();
-        rank[cell->active_cell_index()] = Utilities::MPI::this_mpi_process(comm);
+        rank[cell->active_cell_index()] =
+            Utilities::MPI::this_mpi_process(comm);
       }
     data_out.add_data_vector(material_id, "material_id");
     data_out.add_data_vector(rank, "mpi_rank");
 
     const unsigned int degree = system.fe().degree;
-    data_out.build_patches(system.mapping(),
-                           degree,
-                           DataOut<dim>::curved_inner_cells);
+    data_out.build_patches(
+        system.mapping(), degree, DataOut<dim>::curved_inner_cells);
     data_out.deform(0);
 
     std::ostringstream name;

@@ -40,7 +40,8 @@ namespace softgrasp
     AtomicFile::write(filename, out.str());
   }
 
-  double HistoryWriter::value(const std::size_t row, const std::string &name) const
+  double HistoryWriter::value(const std::size_t  row,
+                              const std::string &name) const
   {
     for (std::size_t c = 0; c < columns.size(); ++c)
       if (columns[c] == name)

@@ -65,7 +65,7 @@ namespace softgrasp
                                     const bool                  with_tangent,
                                     const bool                  given_pressure,
                                     const double                pressure,
-                                    Response &response) const
+                                    Response                   &response) const
   {
     const double J = determinant(F);
     if (!(J > 0) || !std::isfinite(J))
@@ -92,8 +92,7 @@ namespace softgrasp
     const SymmetricTensor<4, 3> CinvCinv = outer_product(Cinv, Cinv);
     const SymmetricTensor<4, 3> CinvSym =
         TensorAlgebra::symmetric_product(Cinv, Cinv);
-    const double d2U =
-        given_pressure ? 0.0 : volumetric.second_derivative(J);
+    const double d2U = given_pressure ? 0.0 : volumetric.second_derivative(J);
 
     // CC_vol = (J^2 U'' + J U') C^-1 (x) C^-1 - 2 J U' C^-1 (.) C^-1
     SymmetricTensor<4, 3> tangent =

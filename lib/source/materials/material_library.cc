@@ -110,35 +110,39 @@ namespace softgrasp
   void MaterialLibrary::add_passes(ParameterReader &reader)
   {
     // Pass 1: the ids are known; declare one subsection per id.
-    reader.add_pass([](ParameterHandler &prm) {
-      prm.enter_subsection("Materials");
-      for (const auto id : parse_ids(prm.get("Material ids")))
-      {
-        prm.enter_subsection(subsection_name(id));
-        declare_material_parameters(prm);
-        prm.leave_subsection();
-      }
-      prm.leave_subsection();
-    });
+    reader.add_pass(
+        [](ParameterHandler &prm)
+        {
+          prm.enter_subsection("Materials");
+          for (const auto id : parse_ids(prm.get("Material ids")))
+          {
+            prm.enter_subsection(subsection_name(id));
+            declare_material_parameters(prm);
+            prm.leave_subsection();
+          }
+          prm.leave_subsection();
+        });
     // Pass 2: apply presets; the final strict parse puts the user's entries
     // on top of them.
-    reader.add_pass([](ParameterHandler &prm) {
-      prm.enter_subsection("Materials");
-      const auto ids = parse_ids(prm.get("Material ids"));
-      prm.leave_subsection();
-      for (const auto id : ids)
-      {
-        prm.enter_subsection("Materials");
-        prm.enter_subsection(subsection_name(id));
-        const std::string preset = prm.get("Preset");
-        prm.leave_subsection();
-        prm.leave_subsection();
-        if (preset != "none")
-          prm.parse_input_from_string(
-              "subsection Materials\nsubsection " + subsection_name(id) +
-              "\n" + TissuePresets::get(preset).parameters + "end\nend\n");
-      }
-    });
+    reader.add_pass(
+        [](ParameterHandler &prm)
+        {
+          prm.enter_subsection("Materials");
+          const auto ids = parse_ids(prm.get("Material ids"));
+          prm.leave_subsection();
+          for (const auto id : ids)
+          {
+            prm.enter_subsection("Materials");
+            prm.enter_subsection(subsection_name(id));
+            const std::string preset = prm.get("Preset");
+            prm.leave_subsection();
+            prm.leave_subsection();
+            if (preset != "none")
+              prm.parse_input_from_string(
+                  "subsection Materials\nsubsection " + subsection_name(id) +
+                  "\n" + TissuePresets::get(preset).parameters + "end\nend\n");
+          }
+        });
   }
 
   std::shared_ptr<const Material>

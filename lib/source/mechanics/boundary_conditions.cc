@@ -24,18 +24,17 @@ namespace softgrasp
       return kind + " boundary " + std::to_string(static_cast<unsigned>(id));
     }
 
-    template <int dim>
-    std::string variables()
+    template <int dim> std::string variables()
     {
       return dim == 2 ? "x,y,t" : "x,y,z,t";
     }
 
     template <int dim>
     std::shared_ptr<FunctionParser<dim>>
-    make_function(const std::string  &expressions,
-                  const unsigned int  n_components,
-                  const std::string  &path,
-                  const std::string  &unit)
+    make_function(const std::string &expressions,
+                  const unsigned int n_components,
+                  const std::string &path,
+                  const std::string &unit)
     {
       auto function = std::make_shared<FunctionParser<dim>>(n_components);
       try
@@ -56,8 +55,7 @@ namespace softgrasp
             "' is not a valid expression list: it needs " +
             std::to_string(n_components) +
             " muParser expression(s) separated by ';' in the variables " +
-            variables<dim>() + " (" + unit +
-            "). Fix: correct the expression.");
+            variables<dim>() + " (" + unit + "). Fix: correct the expression.");
       }
       return function;
     }
@@ -94,45 +92,47 @@ namespace softgrasp
   template <int dim>
   void BoundaryConditions<dim>::add_passes(ParameterReader &reader)
   {
-    reader.add_pass([](ParameterHandler &prm) {
-      prm.enter_subsection("Boundary conditions");
-      for (const std::string kind : kinds)
-        for (const auto id : parse_ids(prm.get(kind + " boundary ids")))
+    reader.add_pass(
+        [](ParameterHandler &prm)
         {
-          prm.enter_subsection(subsection(kind, id));
-          if (kind == "Dirichlet")
-          {
-            prm.declare_entry(
-                "Components",
-                dim == 2 ? "x, y" : "x, y, z",
-                Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
-                "Displacement components prescribed on this boundary.");
-            prm.declare_entry("Displacement",
-                              dim == 2 ? "0; 0" : "0; 0; 0",
-                              Patterns::Anything(),
-                              "Prescribed displacement, one expression per "
-                              "component (all dim of them; unselected ones "
-                              "are ignored) in x, y[, z] (m) and t (s), "
-                              "separated by ';'. Unit: m.");
-          }
-          else if (kind == "Traction")
-            prm.declare_entry("Traction",
-                              dim == 2 ? "0; 0" : "0; 0; 0",
-                              Patterns::Anything(),
-                              "Dead-load traction per unit reference area, "
-                              "one expression per component in x, y[, z] "
-                              "(m) and t (s). Unit: Pa.");
-          else
-            prm.declare_entry("Pressure",
-                              "0",
-                              Patterns::Anything(),
-                              "Follower pressure on the deformed surface "
-                              "(positive pushes inward), an expression in "
-                              "x, y[, z] (m) and t (s). Unit: Pa.");
+          prm.enter_subsection("Boundary conditions");
+          for (const std::string kind : kinds)
+            for (const auto id : parse_ids(prm.get(kind + " boundary ids")))
+            {
+              prm.enter_subsection(subsection(kind, id));
+              if (kind == "Dirichlet")
+              {
+                prm.declare_entry(
+                    "Components",
+                    dim == 2 ? "x, y" : "x, y, z",
+                    Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
+                    "Displacement components prescribed on this boundary.");
+                prm.declare_entry("Displacement",
+                                  dim == 2 ? "0; 0" : "0; 0; 0",
+                                  Patterns::Anything(),
+                                  "Prescribed displacement, one expression per "
+                                  "component (all dim of them; unselected ones "
+                                  "are ignored) in x, y[, z] (m) and t (s), "
+                                  "separated by ';'. Unit: m.");
+              }
+              else if (kind == "Traction")
+                prm.declare_entry("Traction",
+                                  dim == 2 ? "0; 0" : "0; 0; 0",
+                                  Patterns::Anything(),
+                                  "Dead-load traction per unit reference area, "
+                                  "one expression per component in x, y[, z] "
+                                  "(m) and t (s). Unit: Pa.");
+              else
+                prm.declare_entry("Pressure",
+                                  "0",
+                                  Patterns::Anything(),
+                                  "Follower pressure on the deformed surface "
+                                  "(positive pushes inward), an expression in "
+                                  "x, y[, z] (m) and t (s). Unit: Pa.");
+              prm.leave_subsection();
+            }
           prm.leave_subsection();
-        }
-      prm.leave_subsection();
-    });
+        });
   }
 
   template <int dim>
@@ -183,17 +183,15 @@ namespace softgrasp
       prm.leave_subsection();
     }
     const std::string g = prm.get("Gravity");
-    body_acceleration =
-        make_function<dim>(g, dim, base + "Gravity", "m/s^2");
-    gravity_is_zero = true;
+    body_acceleration   = make_function<dim>(g, dim, base + "Gravity", "m/s^2");
+    gravity_is_zero     = true;
     for (const std::string &e : Utilities::split_string_list(g, ';'))
       if (Utilities::trim(e) != "0" && Utilities::trim(e) != "0.0")
         gravity_is_zero = false;
     prm.leave_subsection();
   }
 
-  template <int dim>
-  void BoundaryConditions<dim>::set_time(const double time)
+  template <int dim> void BoundaryConditions<dim>::set_time(const double time)
   {
     for (auto &d : dirichlet)
       d.displacement->set_time(time);
@@ -214,14 +212,12 @@ namespace softgrasp
     return g;
   }
 
-  template <int dim>
-  bool BoundaryConditions<dim>::has_gravity() const
+  template <int dim> bool BoundaryConditions<dim>::has_gravity() const
   {
     return !gravity_is_zero;
   }
 
-  template <int dim>
-  bool BoundaryConditions<dim>::has_follower_loads() const
+  template <int dim> bool BoundaryConditions<dim>::has_follower_loads() const
   {
     return !pressures.empty();
   }

@@ -33,8 +33,7 @@ namespace softgrasp
       return r;
     }
 
-    template <int dim>
-    Point<3> to_3d(const Point<dim> &p)
+    template <int dim> Point<3> to_3d(const Point<dim> &p)
     {
       Point<3> r;
       for (unsigned int d = 0; d < dim; ++d)
@@ -139,12 +138,12 @@ namespace softgrasp
   }
 
   template <int dim>
-  void CellAssembler<dim>::assemble_volume(
-      const TrilinosWrappers::MPI::Vector &u,
-      const Material                      &material,
-      const bool                           with_matrix,
-      AssemblyScratchData<dim>            &scratch,
-      AssemblyCopyData                    &copy) const
+  void
+  CellAssembler<dim>::assemble_volume(const TrilinosWrappers::MPI::Vector &u,
+                                      const Material           &material,
+                                      const bool                with_matrix,
+                                      AssemblyScratchData<dim> &scratch,
+                                      AssemblyCopyData         &copy) const
   {
     const FEValues<dim>      &fe_values = scratch.fe_values;
     const FiniteElement<dim> &fe        = fe_values.get_fe();
@@ -171,8 +170,8 @@ namespace softgrasp
                                 scratch.J,
                                 material.volumetric_energy());
 
-    const bool                           gravity = boundary_conditions.has_gravity();
-    Material::Response                   response;
+    const bool         gravity = boundary_conditions.has_gravity();
+    Material::Response response;
     std::vector<SymmetricTensor<2, dim>> sym(n);
     std::vector<SymmetricTensor<2, dim>> Jc_sym(n);
     for (unsigned int q = 0; q < n_q; ++q)
@@ -221,7 +220,8 @@ namespace softgrasp
           if (fe.system_to_component_index(l).first == ck)
           {
             // geometric stiffness: grad N_k . tau . grad N_l (one component)
-            value += scratch.grad_Nx[q][k][ck] * (tau * scratch.grad_Nx[q][l][ck]);
+            value +=
+                scratch.grad_Nx[q][k][ck] * (tau * scratch.grad_Nx[q][l][ck]);
           }
           copy.matrix(k, l) += value * JxW;
         }
@@ -293,8 +293,7 @@ namespace softgrasp
           {
             const unsigned int c = fe.system_to_component_index(k).first;
             copy.external[k] += fe_face.shape_value(k, q) *
-                                traction.traction->value(X, c) *
-                                fe_face.JxW(q);
+                                traction.traction->value(X, c) * fe_face.JxW(q);
           }
         }
       }
@@ -314,13 +313,14 @@ namespace softgrasp
           const Tensor<2, dim> F_inv = invert(F);
           const Tensor<1, dim> FinvT_N =
               transpose(F_inv) * fe_face.normal_vector(q);
-          const double p   = pressure.pressure->value(fe_face.quadrature_point(q));
+          const double p =
+              pressure.pressure->value(fe_face.quadrature_point(q));
           const double JxW = fe_face.JxW(q);
           for (unsigned int k = 0; k < n; ++k)
           {
             const unsigned int c = fe.system_to_component_index(k).first;
-            copy.external[k] -= fe_face.shape_value(k, q) * p * J *
-                                FinvT_N[c] * JxW;
+            copy.external[k] -=
+                fe_face.shape_value(k, q) * p * J * FinvT_N[c] * JxW;
           }
           if (!with_matrix)
             continue;

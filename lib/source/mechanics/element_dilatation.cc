@@ -92,8 +92,7 @@ namespace softgrasp
     tmp.mmult(kernel, M_inverse);
   }
 
-  template <int dim>
-  unsigned int ElementDilatation<dim>::n_basis() const
+  template <int dim> unsigned int ElementDilatation<dim>::n_basis() const
   {
     return n_functions;
   }
@@ -117,8 +116,7 @@ namespace softgrasp
     return J_tilde[q];
   }
 
-  template <int dim>
-  double ElementDilatation<dim>::mean_pressure() const
+  template <int dim> double ElementDilatation<dim>::mean_pressure() const
   {
     return p_mean;
   }

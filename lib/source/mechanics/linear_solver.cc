@@ -40,8 +40,9 @@ namespace softgrasp
       // MUMPS (multifrontal, nested-dissection ordering) scales far better
       // than KLU on 3D meshes; Debian's Trilinos is built with it.
       TrilinosWrappers::SolverDirect direct(
-          control, TrilinosWrappers::SolverDirect::AdditionalData(
-                       false, "Amesos_Mumps"));
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         "Amesos_Mumps"));
       direct.solve(A, x, b);
       result.converged  = true;
       result.iterations = 1;

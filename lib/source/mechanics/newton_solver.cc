@@ -18,10 +18,10 @@ namespace softgrasp
   typename NewtonSolver<dim>::Result
   NewtonSolver<dim>::solve(SolidSystem<dim> &system) const
   {
-    Result result;
-    auto  &u = system.solution();
-    double violation = system.update_constraints();
-    auto   state     = system.assemble(false);
+    Result                        result;
+    auto                         &u         = system.solution();
+    double                        violation = system.update_constraints();
+    auto                          state     = system.assemble(false);
     TrilinosWrappers::MPI::Vector du, u_start;
     double                        last_increment = 0; // max |alpha du| (m)
 
@@ -40,19 +40,19 @@ namespace softgrasp
           std::max(parameters.relative_tolerance * state.force_scale,
                    parameters.absolute_tolerance);
       const double u_scale = std::max(u.linfty_norm(), 1e-300);
-      log << "    Newton " << std::setw(2) << it << ": |r| = "
-          << std::scientific << std::setprecision(3) << state.residual_norm
-          << " (tolerance " << tolerance << "), |g - u| = " << violation
-          << std::defaultfloat;
+      log << "    Newton " << std::setw(2) << it
+          << ": |r| = " << std::scientific << std::setprecision(3)
+          << state.residual_norm << " (tolerance " << tolerance
+          << "), |g - u| = " << violation << std::defaultfloat;
       const bool increment_small =
-          it > 0 && last_increment <= parameters.increment_tolerance *
-                                          system.length_scale();
+          it > 0 && last_increment <=
+                        parameters.increment_tolerance * system.length_scale();
       if (violation <= 1e-12 * u_scale &&
           (state.residual_norm <= tolerance || increment_small))
       {
-        log << (increment_small && state.residual_norm > tolerance ?
-                    "  converged (update at round-off)" :
-                    "  converged")
+        log << (increment_small && state.residual_norm > tolerance
+                    ? "  converged (update at round-off)"
+                    : "  converged")
             << std::endl;
         result.converged  = true;
         result.iterations = it;
@@ -62,8 +62,8 @@ namespace softgrasp
       {
         log << std::endl;
         result.iterations = it;
-        result.failure    = "no convergence in " + std::to_string(it) +
-                         " Newton iterations";
+        result.failure =
+            "no convergence in " + std::to_string(it) + " Newton iterations";
         return result;
       }
 
@@ -91,9 +91,9 @@ namespace softgrasp
       // |s(0)|, otherwise alpha moves to the secant root of s; updates that
       // invert an element are halved. Skipped while boundary values are
       // being imposed (then r(u) is not the gradient along du).
-      u_start         = u;
-      const double s0 = system.residual_dot(du);
-      const bool   jump = violation > 1e-12 * u_scale;
+      u_start            = u;
+      const double s0    = system.residual_dot(du);
+      const bool   jump  = violation > 1e-12 * u_scale;
       double       alpha = 1.0;
       for (unsigned int ls = 0;; ++ls)
       {
@@ -114,8 +114,7 @@ namespace softgrasp
         const double s = system.residual_dot(du);
         if (std::abs(s) <= 0.8 * std::abs(s0))
           break;
-        const double root =
-            (s0 - s) > 0 ? alpha * s0 / (s0 - s) : 0.5 * alpha;
+        const double root = (s0 - s) > 0 ? alpha * s0 / (s0 - s) : 0.5 * alpha;
         const double next = std::min(1.0, std::max(0.1 * alpha, root));
         if (std::abs(next - alpha) < 1e-3)
           break;

@@ -27,8 +27,7 @@ namespace softgrasp
 
   namespace
   {
-    template <typename T>
-    T parsed(ParameterHandler &prm)
+    template <typename T> T parsed(ParameterHandler &prm)
     {
       T object;
       object.parse_parameters(prm);
@@ -37,7 +36,8 @@ namespace softgrasp
   } // namespace
 
   template <int dim>
-  QuasiStaticSolver<dim>::QuasiStaticSolver(MPI_Comm comm, ParameterHandler &prm)
+  QuasiStaticSolver<dim>::QuasiStaticSolver(MPI_Comm          comm,
+                                            ParameterHandler &prm)
       : comm(comm)
       , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
       , verbose_out(std::cout, false)
@@ -72,8 +72,7 @@ namespace softgrasp
     // Every material id of the mesh needs a material: checked in setup.
   }
 
-  template <int dim>
-  void QuasiStaticSolver<dim>::setup_fresh()
+  template <int dim> void QuasiStaticSolver<dim>::setup_fresh()
   {
     {
       TimerOutput::Scope scope(timers, "setup");
@@ -94,7 +93,7 @@ namespace softgrasp
                                         "linear_iterations",
                                         "cut_backs",
                                         "wall_time"};
-    const char *axes[] = {"x", "y", "z"};
+    const char              *axes[]  = {"x", "y", "z"};
     for (const auto id : boundary_conditions.reaction_boundary_ids())
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back("reaction_" + std::to_string(id) + "_" + axes[d]);
@@ -105,14 +104,13 @@ namespace softgrasp
     history_writer.rows.clear();
   }
 
-  template <int dim>
-  void QuasiStaticSolver<dim>::setup_from_checkpoint()
+  template <int dim> void QuasiStaticSolver<dim>::setup_from_checkpoint()
   {
     {
       TimerOutput::Scope scope(timers, "setup");
       mesh.create_coarse_mesh(triangulation);
     }
-    state = checkpoint.load(triangulation, *solid);
+    state                  = checkpoint.load(triangulation, *solid);
     history_writer.columns = state.history_columns;
     history_writer.rows    = state.history_rows;
     field_output.records   = state.output_records;
@@ -121,8 +119,7 @@ namespace softgrasp
           << ", t = " << state.time << " s." << std::endl;
   }
 
-  template <int dim>
-  void QuasiStaticSolver<dim>::run()
+  template <int dim> void QuasiStaticSolver<dim>::run()
   {
     const auto &time = solver_parameters.time;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -130,8 +127,9 @@ namespace softgrasp
     MPI_Barrier(comm);
 
     const unsigned int mapping_degree =
-        mesh.has_curved_boundary() ? solver_parameters.discretization.degree : 1;
-    solid = std::make_unique<SolidSystem<dim>>(triangulation,
+        mesh.has_curved_boundary() ? solver_parameters.discretization.degree
+                                   : 1;
+    solid             = std::make_unique<SolidSystem<dim>>(triangulation,
                                                material_library,
                                                boundary_conditions,
                                                solver_parameters,
@@ -151,8 +149,8 @@ namespace softgrasp
                   ? "mixed u-p-J"
                   : "displacement")
           << " formulation), " << Utilities::MPI::n_mpi_processes(comm)
-          << " MPI rank(s) x " << MultithreadInfo::n_threads()
-          << " thread(s)." << std::endl;
+          << " MPI rank(s) x " << MultithreadInfo::n_threads() << " thread(s)."
+          << std::endl;
     for (const auto id : material_library.material_ids())
       pcout << "Material " << static_cast<unsigned>(id) << ": "
             << material_library.get(id).summary() << std::endl;
@@ -175,9 +173,9 @@ namespace softgrasp
     const auto previous_step = [&]() { return state.time; };
     while (previous_step() < time.end_time * (1 - 1e-12))
     {
-      unsigned int                 cut_backs = 0;
+      unsigned int                  cut_backs   = 0;
       TrilinosWrappers::MPI::Vector u_converged = solid->solution();
-      double                       t_new;
+      double                        t_new;
       for (;;)
       {
         t_new = std::min(state.time + dt, time.end_time);
@@ -212,9 +210,10 @@ namespace softgrasp
       }
       state.time = t_new;
       ++state.step;
-      record_step(t_new, last_newton_iterations, last_linear_iterations, cut_backs);
+      record_step(
+          t_new, last_newton_iterations, last_linear_iterations, cut_backs);
 
-      const unsigned int vtu = solver_parameters.output.vtu_interval;
+      const unsigned int vtu  = solver_parameters.output.vtu_interval;
       const bool         last = state.time >= time.end_time * (1 - 1e-12);
       if ((vtu > 0 && state.step % vtu == 0) || last)
         write_fields(state.time);
@@ -222,15 +221,14 @@ namespace softgrasp
       if (every > 0 && state.step % every == 0)
         write_checkpoint();
 
-      pcout << "Step " << std::setw(4) << state.step << "  t = " << std::setw(10)
-            << state.time << " s (" << std::setw(3)
+      pcout << "Step " << std::setw(4) << state.step
+            << "  t = " << std::setw(10) << state.time << " s (" << std::setw(3)
             << std::lround(100 * state.time / time.end_time)
             << "%)  dt = " << dt << " s  Newton " << last_newton_iterations
             << "  linear " << last_linear_iterations << "  |r| "
             << std::scientific << std::setprecision(2) << last_residual
             << std::defaultfloat << std::setprecision(6) << "  wall "
-            << ProgressReporter::format_duration(progress.elapsed())
-            << "  ETA "
+            << ProgressReporter::format_duration(progress.elapsed()) << "  ETA "
             << ProgressReporter::format_duration(progress.eta(state.time))
             << std::endl;
       if (cut_backs == 0)
@@ -241,10 +239,11 @@ namespace softgrasp
   }
 
   template <int dim>
-  bool QuasiStaticSolver<dim>::solve_step(const double time, std::string &report)
+  bool QuasiStaticSolver<dim>::solve_step(const double time,
+                                          std::string &report)
   {
     boundary_conditions.set_time(time);
-    const auto result = newton.solve(*solid);
+    const auto result      = newton.solve(*solid);
     last_newton_iterations = result.iterations;
     last_linear_iterations = result.linear_iterations;
     last_residual = result.residuals.empty() ? 0 : result.residuals.back();
@@ -273,7 +272,7 @@ namespace softgrasp
                                double(linear_iterations),
                                double(cut_backs),
                                progress.elapsed()};
-    previous_time = time;
+    previous_time           = time;
     for (const auto &[id, force] : solid->reactions())
       for (unsigned int d = 0; d < dim; ++d)
         row.push_back(force[d]);
@@ -297,8 +296,7 @@ namespace softgrasp
     last_output_step = state.step;
   }
 
-  template <int dim>
-  void QuasiStaticSolver<dim>::write_checkpoint()
+  template <int dim> void QuasiStaticSolver<dim>::write_checkpoint()
   {
     TimerOutput::Scope scope(timers, "checkpoint");
     state.history_columns = history_writer.columns;
@@ -332,8 +330,7 @@ namespace softgrasp
     return solver_parameters;
   }
 
-  template <int dim>
-  TimerOutput &QuasiStaticSolver<dim>::timer()
+  template <int dim> TimerOutput &QuasiStaticSolver<dim>::timer()
   {
     return timers;
   }

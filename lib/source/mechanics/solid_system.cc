@@ -13,13 +13,12 @@ namespace softgrasp
   using namespace dealii;
 
   template <int dim>
-  SolidSystem<dim>::SolidSystem(
-      parallel::distributed::Triangulation<dim> &tria,
-      const MaterialLibrary                     &materials,
-      const BoundaryConditions<dim>             &bcs,
-      const SolverParameters                    &parameters,
-      const unsigned int                         mapping_degree,
-      TimerOutput                               &timer)
+  SolidSystem<dim>::SolidSystem(parallel::distributed::Triangulation<dim> &tria,
+                                const MaterialLibrary         &materials,
+                                const BoundaryConditions<dim> &bcs,
+                                const SolverParameters        &parameters,
+                                const unsigned int             mapping_degree,
+                                TimerOutput                   &timer)
       : triangulation(tria)
       , materials(materials)
       , boundary_conditions(bcs)
@@ -35,13 +34,12 @@ namespace softgrasp
   {
   }
 
-  template <int dim>
-  void SolidSystem<dim>::setup()
+  template <int dim> void SolidSystem<dim>::setup()
   {
     TimerOutput::Scope scope(timer, "setup");
     dofs.distribute_dofs(finite_element);
-    owned    = dofs.locally_owned_dofs();
-    relevant = DoFTools::extract_locally_relevant_dofs(dofs);
+    owned               = dofs.locally_owned_dofs();
+    relevant            = DoFTools::extract_locally_relevant_dofs(dofs);
     const MPI_Comm comm = communicator();
 
     u.reinit(owned, comm);
@@ -95,29 +93,26 @@ namespace softgrasp
           }
     domain_size = 0;
     for (unsigned int d = 0; d < dim; ++d)
-      domain_size = std::max(domain_size,
-                             Utilities::MPI::max(upper[d], communicator()) +
-                                 Utilities::MPI::max(-lower[d], communicator()));
+      domain_size =
+          std::max(domain_size,
+                   Utilities::MPI::max(upper[d], communicator()) +
+                       Utilities::MPI::max(-lower[d], communicator()));
   }
 
-  template <int dim>
-  double SolidSystem<dim>::length_scale() const
+  template <int dim> double SolidSystem<dim>::length_scale() const
   {
     return domain_size;
   }
 
-  template <int dim>
-  void SolidSystem<dim>::compute_rigid_body_modes()
+  template <int dim> void SolidSystem<dim>::compute_rigid_body_modes()
   {
     // Translations and rotations evaluated at the support points.
-    const unsigned int n_modes = dim == 2 ? 3 : 6;
+    const unsigned int                         n_modes = dim == 2 ? 3 : 6;
     std::vector<TrilinosWrappers::MPI::Vector> modes(
         n_modes, TrilinosWrappers::MPI::Vector(owned, communicator()));
     const Quadrature<dim> support(finite_element.get_unit_support_points());
-    FEValues<dim>         fe_values(reference_mapping,
-                            finite_element,
-                            support,
-                            update_quadrature_points);
+    FEValues<dim>         fe_values(
+        reference_mapping, finite_element, support, update_quadrature_points);
     std::vector<types::global_dof_index> indices(
         finite_element.n_dofs_per_cell());
     for (const auto &cell : dofs.active_cell_iterators())
@@ -130,17 +125,17 @@ namespace softgrasp
       {
         if (!owned.is_element(indices[k]))
           continue;
-        const unsigned int c = finite_element.system_to_component_index(k).first;
-        const Point<dim>  &x = fe_values.quadrature_point(k);
+        const unsigned int c =
+            finite_element.system_to_component_index(k).first;
+        const Point<dim> &x  = fe_values.quadrature_point(k);
         modes[c][indices[k]] = 1.0;
         if (dim == 2)
           modes[2][indices[k]] = (c == 0 ? -x[1] : x[0]);
         else
         {
           // rotations about x, y, z: (0,-z,y), (z,0,-x), (-y,x,0)
-          const double rot[3][3] = {{0, -x[2], x[1]},
-                                    {x[2], 0, -x[0]},
-                                    {-x[1], x[0], 0}};
+          const double rot[3][3] = {
+              {0, -x[2], x[1]}, {x[2], 0, -x[0]}, {-x[1], x[0], 0}};
           for (unsigned int r = 0; r < 3; ++r)
             modes[3 + r][indices[k]] = rot[r][c];
         }
@@ -151,8 +146,7 @@ namespace softgrasp
     linear_solver.set_rigid_body_modes(modes);
   }
 
-  template <int dim>
-  double SolidSystem<dim>::update_constraints()
+  template <int dim> double SolidSystem<dim>::update_constraints()
   {
     update_ghosts();
     constraints.clear();
@@ -207,12 +201,12 @@ namespace softgrasp
 
     using Iterator   = typename DoFHandler<dim>::active_cell_iterator;
     using CellFilter = FilteredIterator<Iterator>;
-    auto worker    = [&](const Iterator           &cell,
+    auto worker      = [&](const Iterator           &cell,
                       AssemblyScratchData<dim> &scratch,
-                      AssemblyCopyData         &copy) {
-      assembler.assemble(cell, u_ghosted, with_matrix, scratch, copy);
-    };
-    auto copier = [&](const AssemblyCopyData &copy) {
+                      AssemblyCopyData         &copy)
+    { assembler.assemble(cell, u_ghosted, with_matrix, scratch, copy); };
+    auto copier = [&](const AssemblyCopyData &copy)
+    {
       if (copy.failed)
       {
         if (result.ok)
@@ -227,9 +221,8 @@ namespace softgrasp
       cell_rhs -= copy.internal;
       f_int.add(copy.dof_indices, copy.internal);
       f_ext.add(copy.dof_indices, copy.external);
-      homogeneous_constraints.distribute_local_to_global(cell_rhs,
-                                                         copy.dof_indices,
-                                                         residual);
+      homogeneous_constraints.distribute_local_to_global(
+          cell_rhs, copy.dof_indices, residual);
       if (with_matrix)
         constraints.distribute_local_to_global(
             copy.matrix, cell_rhs, copy.dof_indices, tangent, rhs);
@@ -292,7 +285,8 @@ namespace softgrasp
   }
 
   template <int dim>
-  std::map<types::boundary_id, Tensor<1, dim>> SolidSystem<dim>::reactions() const
+  std::map<types::boundary_id, Tensor<1, dim>>
+  SolidSystem<dim>::reactions() const
   {
     std::map<types::boundary_id, Tensor<1, dim>> result;
     const auto ids = boundary_conditions.reaction_boundary_ids();
@@ -318,18 +312,19 @@ namespace softgrasp
       double         found = 0;
       try
       {
-        const auto cell_and_point =
-            GridTools::find_active_cell_around_point(reference_mapping, dofs, p);
+        const auto cell_and_point = GridTools::find_active_cell_around_point(
+            reference_mapping, dofs, p);
         if (cell_and_point.first.state() == IteratorState::valid &&
             cell_and_point.first->is_locally_owned())
         {
-          const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(
-              cell_and_point.second));
-          FEValues<dim> fe_values(reference_mapping, finite_element, q, update_values);
+          const Quadrature<dim> q(
+              GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
+          FEValues<dim> fe_values(
+              reference_mapping, finite_element, q, update_values);
           fe_values.reinit(cell_and_point.first);
           std::vector<Tensor<1, dim>> u_q(1);
-          fe_values[FEValuesExtractors::Vector(0)].get_function_values(u_ghosted,
-                                                                       u_q);
+          fe_values[FEValuesExtractors::Vector(0)].get_function_values(
+              u_ghosted, u_q);
           value = u_q[0];
           found = 1;
         }
@@ -338,8 +333,8 @@ namespace softgrasp
       {
         // not in this rank's part of the mesh
       }
-      value       = Utilities::MPI::sum(value, communicator());
-      found       = Utilities::MPI::sum(found, communicator());
+      value = Utilities::MPI::sum(value, communicator());
+      found = Utilities::MPI::sum(found, communicator());
       if (found > 0)
         result.push_back(value / found);
       else
@@ -353,20 +348,19 @@ namespace softgrasp
     return result;
   }
 
-  template <int dim>
-  void SolidSystem<dim>::update_ghosts()
+  template <int dim> void SolidSystem<dim>::update_ghosts()
   {
     u_ghosted = u;
   }
 
-  template <int dim>
-  TrilinosWrappers::MPI::Vector &SolidSystem<dim>::solution()
+  template <int dim> TrilinosWrappers::MPI::Vector &SolidSystem<dim>::solution()
   {
     return u;
   }
 
   template <int dim>
-  const TrilinosWrappers::MPI::Vector &SolidSystem<dim>::ghosted_solution() const
+  const TrilinosWrappers::MPI::Vector &
+  SolidSystem<dim>::ghosted_solution() const
   {
     return u_ghosted;
   }
@@ -377,32 +371,27 @@ namespace softgrasp
     return dofs;
   }
 
-  template <int dim>
-  DoFHandler<dim> &SolidSystem<dim>::dof_handler()
+  template <int dim> DoFHandler<dim> &SolidSystem<dim>::dof_handler()
   {
     return dofs;
   }
 
-  template <int dim>
-  const Mapping<dim> &SolidSystem<dim>::mapping() const
+  template <int dim> const Mapping<dim> &SolidSystem<dim>::mapping() const
   {
     return reference_mapping;
   }
 
-  template <int dim>
-  const FiniteElement<dim> &SolidSystem<dim>::fe() const
+  template <int dim> const FiniteElement<dim> &SolidSystem<dim>::fe() const
   {
     return finite_element;
   }
 
-  template <int dim>
-  MPI_Comm SolidSystem<dim>::communicator() const
+  template <int dim> MPI_Comm SolidSystem<dim>::communicator() const
   {
     return triangulation.get_communicator();
   }
 
-  template <int dim>
-  types::global_dof_index SolidSystem<dim>::n_dofs() const
+  template <int dim> types::global_dof_index SolidSystem<dim>::n_dofs() const
   {
     return dofs.n_dofs();
   }

@@ -76,10 +76,8 @@ namespace softgrasp
                       Patterns::Double(0),
                       "Pseudo-time at the end of loading; the variable t in "
                       "the load expressions runs from 0 to it. Unit: s.");
-    prm.declare_entry("Time step",
-                      "0.1",
-                      Patterns::Double(0),
-                      "Nominal load step. Unit: s.");
+    prm.declare_entry(
+        "Time step", "0.1", Patterns::Double(0), "Nominal load step. Unit: s.");
     prm.declare_entry("Minimum time step",
                       "1e-6",
                       Patterns::Double(0),
@@ -163,15 +161,16 @@ namespace softgrasp
   void LinearSolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    prm.declare_entry("Type",
-                      "iterative",
-                      Patterns::Selection(selection(solver_names)),
-                      "'direct': sparse LU (MUMPS through Amesos), robust, for small "
-                      "problems. 'iterative': conjugate gradients (GMRES "
-                      "when follower pressure makes the tangent "
-                      "unsymmetric) preconditioned by Trilinos ML algebraic "
-                      "multigrid with the rigid-body modes as near null "
-                      "space.");
+    prm.declare_entry(
+        "Type",
+        "iterative",
+        Patterns::Selection(selection(solver_names)),
+        "'direct': sparse LU (MUMPS through Amesos), robust, for small "
+        "problems. 'iterative': conjugate gradients (GMRES "
+        "when follower pressure makes the tangent "
+        "unsymmetric) preconditioned by Trilinos ML algebraic "
+        "multigrid with the rigid-body modes as near null "
+        "space.");
     prm.declare_entry("Relative tolerance",
                       "1e-8",
                       Patterns::Double(0, 1),

@@ -28,9 +28,10 @@ namespace softgrasp
       GridGenerator::subdivided_hyper_rectangle(
           triangulation, repetitions, Point<dim>(), upper, true);
       GridTools::transform(
-          [](const Point<dim> &p) {
-            Point<dim>   q = p;
-            const double x = 0.048 * p[0];
+          [](const Point<dim> &p)
+          {
+            Point<dim>   q      = p;
+            const double x      = 0.048 * p[0];
             const double bottom = 0.044 * p[0];
             const double top    = 0.044 + 0.016 * p[0];
             q[0]                = x;

@@ -29,8 +29,8 @@ namespace softgrasp
       {
       }
       if (values.size() < dim)
-        throw InputError("Parameter '" + path + "' = '" + text +
-                         "' needs " + std::to_string(dim) +
+        throw InputError("Parameter '" + path + "' = '" + text + "' needs " +
+                         std::to_string(dim) +
                          " comma-separated coordinates (m). Fix: give one "
                          "number per coordinate.");
       Point<dim> p;
@@ -66,33 +66,50 @@ namespace softgrasp
                       "edge length (deterministic seed); for patch tests of "
                       "distorted elements. Unit: 1.");
     prm.enter_subsection("Block");
-    prm.declare_entry("Lower corner", "0, 0, 0", Patterns::Anything(),
+    prm.declare_entry("Lower corner",
+                      "0, 0, 0",
+                      Patterns::Anything(),
                       "Corner with the smallest coordinates. Unit: m.");
-    prm.declare_entry("Upper corner", "0.01, 0.01, 0.01", Patterns::Anything(),
+    prm.declare_entry("Upper corner",
+                      "0.01, 0.01, 0.01",
+                      Patterns::Anything(),
                       "Corner with the largest coordinates. Unit: m.");
-    prm.declare_entry("Subdivisions", "2, 2, 2",
+    prm.declare_entry("Subdivisions",
+                      "2, 2, 2",
                       Patterns::List(Patterns::Integer(1)),
                       "Elements per direction before refinement. Unit: 1.");
     prm.leave_subsection();
     prm.enter_subsection("Cook's membrane");
-    prm.declare_entry("Elements per edge", "8", Patterns::Integer(1),
+    prm.declare_entry("Elements per edge",
+                      "8",
+                      Patterns::Integer(1),
                       "Elements along each edge of the membrane. Unit: 1.");
-    prm.declare_entry("Thickness", "0.001", Patterns::Double(0),
+    prm.declare_entry("Thickness",
+                      "0.001",
+                      Patterns::Double(0),
                       "Out-of-plane thickness (3D only). Unit: m.");
-    prm.declare_entry("Layers", "1", Patterns::Integer(1),
+    prm.declare_entry("Layers",
+                      "1",
+                      Patterns::Integer(1),
                       "Elements through the thickness (3D only). Unit: 1.");
     prm.leave_subsection();
     prm.enter_subsection("Ball");
-    prm.declare_entry("Center", "0, 0, 0", Patterns::Anything(),
+    prm.declare_entry("Center",
+                      "0, 0, 0",
+                      Patterns::Anything(),
                       "Centre of the ball. Unit: m.");
-    prm.declare_entry("Radius", "0.04", Patterns::Double(0),
-                      "Radius of the ball. Unit: m.");
+    prm.declare_entry(
+        "Radius", "0.04", Patterns::Double(0), "Radius of the ball. Unit: m.");
     prm.leave_subsection();
     prm.enter_subsection("File");
-    prm.declare_entry("File name", "", Patterns::Anything(),
+    prm.declare_entry("File name",
+                      "",
+                      Patterns::Anything(),
                       "Gmsh (.msh) or Abaqus (.inp) file, relative to the "
                       "working directory.");
-    prm.declare_entry("Scale", "1", Patterns::Double(0),
+    prm.declare_entry("Scale",
+                      "1",
+                      Patterns::Double(0),
                       "Factor from the file's length unit to metres (1e-3 "
                       "for millimetres). Unit: m per file unit.");
     prm.leave_subsection();
@@ -109,10 +126,13 @@ namespace softgrasp
         type = static_cast<Type>(entry.second);
     global_refinements = prm.get_integer("Global refinements");
     distortion         = prm.get_double("Distortion");
-    material_id = static_cast<types::material_id>(prm.get_integer("Material id"));
+    material_id =
+        static_cast<types::material_id>(prm.get_integer("Material id"));
     prm.enter_subsection("Block");
-    lower = parse_point<dim>(prm.get("Lower corner"), "Mesh/Block/Lower corner");
-    upper = parse_point<dim>(prm.get("Upper corner"), "Mesh/Block/Upper corner");
+    lower =
+        parse_point<dim>(prm.get("Lower corner"), "Mesh/Block/Lower corner");
+    upper =
+        parse_point<dim>(prm.get("Upper corner"), "Mesh/Block/Upper corner");
     subdivisions.clear();
     for (const std::string &s :
          Utilities::split_string_list(prm.get("Subdivisions")))
@@ -144,25 +164,25 @@ namespace softgrasp
   }
 
   template <int dim>
-  void MeshFactory<dim>::create_coarse_mesh(
-      Triangulation<dim> &triangulation) const
+  void
+  MeshFactory<dim>::create_coarse_mesh(Triangulation<dim> &triangulation) const
   {
     switch (type)
     {
-      case Type::block:
-        GridGenerator::subdivided_hyper_rectangle(
-            triangulation, subdivisions, lower, upper, true);
-        break;
-      case Type::cook_membrane:
-        Meshes::cook_membrane(
-            triangulation, elements_per_edge, thickness, layers);
-        break;
-      case Type::ball:
-        GridGenerator::hyper_ball_balanced(triangulation, center, radius);
-        break;
-      case Type::file:
-        Meshes::read_mesh_file(triangulation, file_name, scale);
-        break;
+    case Type::block:
+      GridGenerator::subdivided_hyper_rectangle(
+          triangulation, subdivisions, lower, upper, true);
+      break;
+    case Type::cook_membrane:
+      Meshes::cook_membrane(
+          triangulation, elements_per_edge, thickness, layers);
+      break;
+    case Type::ball:
+      GridGenerator::hyper_ball_balanced(triangulation, center, radius);
+      break;
+    case Type::file:
+      Meshes::read_mesh_file(triangulation, file_name, scale);
+      break;
     }
     if (type != Type::file) // files carry their own material ids
       for (const auto &cell : triangulation.active_cell_iterators())
@@ -178,8 +198,7 @@ namespace softgrasp
       triangulation.refine_global(global_refinements);
   }
 
-  template <int dim>
-  bool MeshFactory<dim>::has_curved_boundary() const
+  template <int dim> bool MeshFactory<dim>::has_curved_boundary() const
   {
     return type == Type::ball;
   }

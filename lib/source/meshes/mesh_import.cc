@@ -20,8 +20,8 @@ namespace softgrasp
       const std::string extension =
           std::filesystem::path(filename).extension().string();
       if (extension != ".msh" && extension != ".inp")
-        throw InputError("Mesh file '" + filename +
-                         "' has the extension '" + extension +
+        throw InputError("Mesh file '" + filename + "' has the extension '" +
+                         extension +
                          "', which softgrasp cannot read. Fix: export the "
                          "mesh as Gmsh (.msh) or Abaqus (.inp).");
       std::ifstream in(filename);
@@ -43,8 +43,8 @@ namespace softgrasp
         std::ostringstream info;
         e.print_info(info);
         throw InputError("The mesh file '" + filename +
-                         "' cannot be read as a " + std::to_string(dim) +
-                         "D " + (extension == ".msh" ? "Gmsh" : "Abaqus") +
+                         "' cannot be read as a " + std::to_string(dim) + "D " +
+                         (extension == ".msh" ? "Gmsh" : "Abaqus") +
                          " mesh: " + info.str() +
                          " Fix: check that the file is complete, of the "
                          "right dimension, and contains only hexahedra "

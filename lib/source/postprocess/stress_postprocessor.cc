@@ -1,5 +1,5 @@
-#include <limits>
 #include <deal.II/dofs/dof_handler.h>
+#include <limits>
 #include <softgrasp/base/plane_strain.h>
 #include <softgrasp/postprocess/principal_strains.h>
 #include <softgrasp/postprocess/stress_postprocessor.h>
@@ -28,7 +28,7 @@ namespace softgrasp
       Tensor<2, dim> F = unit_symmetric_tensor<dim>();
       for (unsigned int i = 0; i < dim; ++i)
         F[i] += inputs.solution_gradients[q][first_component + i];
-      Vector<double> &out = computed_quantities[q];
+      Vector<double>       &out = computed_quantities[q];
       SymmetricTensor<2, 3> sigma;
       try
       {

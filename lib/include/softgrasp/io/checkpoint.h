@@ -12,10 +12,10 @@ namespace softgrasp
   /// The scalar state of a run that a restart needs besides the fields.
   struct RunState
   {
-    double       time      = 0; ///< s
-    double       step_size = 0; ///< s
-    unsigned int step      = 0;
-    unsigned int n_outputs = 0;
+    double                                      time      = 0; ///< s
+    double                                      step_size = 0; ///< s
+    unsigned int                                step      = 0;
+    unsigned int                                n_outputs = 0;
     std::vector<std::string>                    history_columns;
     std::vector<std::vector<double>>            history_rows;
     std::vector<std::pair<double, std::string>> output_records;
@@ -38,8 +38,7 @@ namespace softgrasp
    * "checkpoint.old" until the rename is done: a run killed at any moment
    * leaves at least one complete checkpoint.
    */
-  template <int dim>
-  class Checkpoint
+  template <int dim> class Checkpoint
   {
   public:
     explicit Checkpoint(std::string directory);

@@ -21,8 +21,7 @@ namespace softgrasp
    * .pvd collection; each is written to a temporary name and renamed, so
    * no reader sees a partial file.
    */
-  template <int dim>
-  class FieldOutput
+  template <int dim> class FieldOutput
   {
   public:
     FieldOutput(std::string directory, std::string base_name);

@@ -73,15 +73,15 @@ namespace softgrasp
     void evaluate_material_with_pressure(const dealii::Tensor<2, 3> &F,
                                          const StructuralDirections &directions,
                                          const double                pressure,
-                                         const bool                  with_tangent,
-                                         Response &response) const;
+                                         const bool with_tangent,
+                                         Response  &response) const;
 
     /// Spatial counterpart of evaluate_material_with_pressure(): tau, J cc.
     void evaluate_spatial_with_pressure(const dealii::Tensor<2, 3> &F,
                                         const StructuralDirections &directions,
                                         const double                pressure,
-                                        const bool                  with_tangent,
-                                        Response                   &response) const;
+                                        const bool with_tangent,
+                                        Response  &response) const;
 
     /// tau and (if @p with_tangent) J cc at deformation gradient @p F.
     void evaluate_spatial(const dealii::Tensor<2, 3> &F,

@@ -27,8 +27,7 @@ namespace softgrasp
    *
    * In 2D (plane strain) forces are per metre of thickness.
    */
-  template <int dim>
-  class BoundaryConditions
+  template <int dim> class BoundaryConditions
   {
   public:
     struct Dirichlet

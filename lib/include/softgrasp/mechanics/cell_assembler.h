@@ -18,8 +18,7 @@
 namespace softgrasp
 {
   /// Per-thread scratch space of the WorkStream assembly.
-  template <int dim>
-  struct AssemblyScratchData
+  template <int dim> struct AssemblyScratchData
   {
     AssemblyScratchData(const dealii::Mapping<dim>        &mapping,
                         const dealii::FiniteElement<dim>  &fe,
@@ -61,8 +60,7 @@ namespace softgrasp
    * Integrals are over the reference configuration. In 2D the material is
    * evaluated in plane strain.
    */
-  template <int dim>
-  class CellAssembler
+  template <int dim> class CellAssembler
   {
   public:
     CellAssembler(const MaterialLibrary         &materials,
@@ -70,26 +68,26 @@ namespace softgrasp
                   const Formulation              formulation);
 
     /// Fill @p copy for @p cell at displacement @p u (ghosted).
-    void assemble(const typename dealii::DoFHandler<dim>::active_cell_iterator
-                                                         &cell,
-                  const dealii::TrilinosWrappers::MPI::Vector &u,
-                  const bool                                  with_matrix,
-                  AssemblyScratchData<dim>                   &scratch,
-                  AssemblyCopyData                           &copy) const;
+    void
+    assemble(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+             const dealii::TrilinosWrappers::MPI::Vector                  &u,
+             const bool                with_matrix,
+             AssemblyScratchData<dim> &scratch,
+             AssemblyCopyData         &copy) const;
 
   private:
     void assemble_volume(const dealii::TrilinosWrappers::MPI::Vector &u,
                          const Material                              &material,
-                         const bool                 with_matrix,
+                         const bool                with_matrix,
                          AssemblyScratchData<dim> &scratch,
                          AssemblyCopyData         &copy) const;
 
     void assemble_boundary(
         const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
         const dealii::TrilinosWrappers::MPI::Vector                  &u,
-        const bool                                                    with_matrix,
-        AssemblyScratchData<dim>                                     &scratch,
-        AssemblyCopyData                                             &copy) const;
+        const bool                with_matrix,
+        AssemblyScratchData<dim> &scratch,
+        AssemblyCopyData         &copy) const;
 
     const MaterialLibrary         &materials;
     const BoundaryConditions<dim> &boundary_conditions;

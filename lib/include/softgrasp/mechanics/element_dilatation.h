@@ -29,8 +29,7 @@ namespace softgrasp
    * The P1 basis is {1, (X - X_c)/h} in reference coordinates, centred and
    * scaled on the element for conditioning.
    */
-  template <int dim>
-  class ElementDilatation
+  template <int dim> class ElementDilatation
   {
   public:
     /// @p degree of the pressure/dilatation polynomials: 0 or 1.

@@ -46,9 +46,9 @@ namespace softgrasp
                  const bool                                    symmetric);
 
   private:
-    LinearSolverParameters                                   parameters;
-    std::vector<dealii::TrilinosWrappers::MPI::Vector>       modes;
-    std::unique_ptr<Epetra_MultiVector>                      null_space;
+    LinearSolverParameters                             parameters;
+    std::vector<dealii::TrilinosWrappers::MPI::Vector> modes;
+    std::unique_ptr<Epetra_MultiVector>                null_space;
   };
 } // namespace softgrasp
 

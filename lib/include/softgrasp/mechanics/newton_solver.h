@@ -22,8 +22,7 @@ namespace softgrasp
    * On failure the system holds the last iterate; the caller restores the
    * last converged state and cuts the step back.
    */
-  template <int dim>
-  class NewtonSolver
+  template <int dim> class NewtonSolver
   {
   public:
     struct Result
@@ -35,7 +34,7 @@ namespace softgrasp
       std::string         failure;   ///< why, if !converged
     };
 
-    NewtonSolver(const NewtonParameters      &parameters,
+    NewtonSolver(const NewtonParameters     &parameters,
                  dealii::ConditionalOStream &log);
 
     Result solve(SolidSystem<dim> &system) const;

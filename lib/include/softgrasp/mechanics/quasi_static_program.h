@@ -21,8 +21,7 @@ namespace softgrasp
    *
    * MPI must be initialised by the caller (Utilities::MPI::MPI_InitFinalize).
    */
-  template <int dim>
-  class QuasiStaticSolver;
+  template <int dim> class QuasiStaticSolver;
 
   struct QuasiStaticProgram
   {

@@ -12,11 +12,11 @@
 #include <softgrasp/io/field_output.h>
 #include <softgrasp/io/history_writer.h>
 #include <softgrasp/materials/material_library.h>
-#include <softgrasp/meshes/mesh_factory.h>
 #include <softgrasp/mechanics/boundary_conditions.h>
 #include <softgrasp/mechanics/newton_solver.h>
 #include <softgrasp/mechanics/solid_system.h>
 #include <softgrasp/mechanics/solver_parameters.h>
+#include <softgrasp/meshes/mesh_factory.h>
 #include <stdexcept>
 
 namespace softgrasp
@@ -42,8 +42,7 @@ namespace softgrasp
    * A program is: declare_parameters(), read the .prm with the passes of
    * add_passes(), construct, run(). See examples/cook_membrane.
    */
-  template <int dim>
-  class QuasiStaticSolver
+  template <int dim> class QuasiStaticSolver
   {
   public:
     static void declare_parameters(dealii::ParameterHandler &prm);
@@ -54,10 +53,10 @@ namespace softgrasp
     /// Solve all load steps (or continue from the checkpoint).
     void run();
 
-    const SolidSystem<dim>  &system() const;
-    const HistoryWriter     &history() const;
-    const MaterialLibrary   &materials() const;
-    const SolverParameters  &parameters() const;
+    const SolidSystem<dim> &system() const;
+    const HistoryWriter    &history() const;
+    const MaterialLibrary  &materials() const;
+    const SolverParameters &parameters() const;
     /// Wall-clock times per phase (setup, assembly, linear solve, output).
     dealii::TimerOutput &timer();
 
@@ -89,7 +88,7 @@ namespace softgrasp
     ProgressReporter                                  progress;
     RunState                                          state;
     std::vector<dealii::Point<dim>>                   monitor_points;
-    unsigned int last_output_step = static_cast<unsigned int>(-1);
+    unsigned int last_output_step       = static_cast<unsigned int>(-1);
     unsigned int last_newton_iterations = 0;
     unsigned int last_linear_iterations = 0;
     double       last_residual          = 0;

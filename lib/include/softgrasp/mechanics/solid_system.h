@@ -28,15 +28,14 @@ namespace softgrasp
    * boundary value reached only partially (after a line search) is
    * completed by the next iteration.
    */
-  template <int dim>
-  class SolidSystem
+  template <int dim> class SolidSystem
   {
   public:
     struct AssemblyResult
     {
-      bool        ok = true;       ///< false if an element inverted
-      std::string failed_cell;     ///< where, if !ok
-      double      failed_J = 0;    ///< the J found there
+      bool        ok = true;         ///< false if an element inverted
+      std::string failed_cell;       ///< where, if !ok
+      double      failed_J      = 0; ///< the J found there
       double      residual_norm = 0; ///< |f_int - f_ext| on free dofs (N)
       double      force_scale   = 0; ///< max(|f_int|, |f_ext|) (N)
     };
@@ -45,8 +44,8 @@ namespace softgrasp
                 const MaterialLibrary                             &materials,
                 const BoundaryConditions<dim>                     &bcs,
                 const SolverParameters                            &parameters,
-                const unsigned int                 mapping_degree,
-                dealii::TimerOutput               &timer);
+                const unsigned int   mapping_degree,
+                dealii::TimerOutput &timer);
 
     /// Distribute dofs and size matrix and vectors (the solution is zeroed).
     void setup();
@@ -106,13 +105,13 @@ namespace softgrasp
     CellAssembler<dim>                                 assembler;
     LinearSolver                                       linear_solver;
 
-    dealii::IndexSet                          owned, relevant;
-    dealii::AffineConstraints<double>         constraints;
-    dealii::AffineConstraints<double>         homogeneous_constraints;
-    dealii::TrilinosWrappers::SparseMatrix    tangent;
-    dealii::TrilinosWrappers::MPI::Vector     u, u_ghosted;
-    dealii::TrilinosWrappers::MPI::Vector     rhs, residual, f_int, f_ext;
-    std::vector<std::vector<dealii::IndexSet>> reaction_dofs; ///< [id][c]
+    dealii::IndexSet                           owned, relevant;
+    dealii::AffineConstraints<double>          constraints;
+    dealii::AffineConstraints<double>          homogeneous_constraints;
+    dealii::TrilinosWrappers::SparseMatrix     tangent;
+    dealii::TrilinosWrappers::MPI::Vector      u, u_ghosted;
+    dealii::TrilinosWrappers::MPI::Vector      rhs, residual, f_int, f_ext;
+    std::vector<std::vector<dealii::IndexSet>> reaction_dofs;   ///< [id][c]
     double                                     domain_size = 1; ///< m
   };
 } // namespace softgrasp

@@ -42,7 +42,7 @@ namespace softgrasp
     double       end_time      = 1.0;  ///< s
     double       step_size     = 0.1;  ///< nominal step, s
     double       minimum_step  = 1e-6; ///< smallest step after cut-backs, s
-    unsigned int max_cut_backs = 8;    ///< halvings of one step before giving up
+    unsigned int max_cut_backs = 8; ///< halvings of one step before giving up
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
@@ -56,8 +56,8 @@ namespace softgrasp
     double relative_tolerance = 1e-8;
     double absolute_tolerance = 1e-12; ///< N (force per unit thickness in 2D)
     /// also converged when max |du| <= this times the domain size; 1
-    double increment_tolerance = 1e-12;
-    bool   line_search        = true;
+    double       increment_tolerance   = 1e-12;
+    bool         line_search           = true;
     unsigned int max_line_search_steps = 6; ///< step halvings
 
     static void declare_parameters(dealii::ParameterHandler &prm);
@@ -67,11 +67,11 @@ namespace softgrasp
   /// Linear solver ("Linear solver" subsection).
   struct LinearSolverParameters
   {
-    LinearSolverType type               = LinearSolverType::iterative;
-    double           relative_tolerance = 1e-8; ///< of |rhs|; 1
-    unsigned int     max_iterations     = 2000;
-    double       aggregation_threshold  = 1e-4; ///< ML AMG; 1
-    unsigned int smoother_sweeps        = 2;    ///< ML AMG Chebyshev degree
+    LinearSolverType type                  = LinearSolverType::iterative;
+    double           relative_tolerance    = 1e-8; ///< of |rhs|; 1
+    unsigned int     max_iterations        = 2000;
+    double           aggregation_threshold = 1e-4; ///< ML AMG; 1
+    unsigned int     smoother_sweeps       = 2;    ///< ML AMG Chebyshev degree
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

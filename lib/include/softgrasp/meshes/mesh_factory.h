@@ -21,8 +21,7 @@ namespace softgrasp
    *  - Cook's membrane: see Meshes::cook_membrane();
    *  - ball: 0 on the sphere.
    */
-  template <int dim>
-  class MeshFactory
+  template <int dim> class MeshFactory
   {
   public:
     enum class Type
@@ -54,7 +53,7 @@ namespace softgrasp
     double       thickness         = 1e-3; ///< m, 3D only
     unsigned int layers            = 1;
     // ball
-    dealii::Point<dim> center; ///< m
+    dealii::Point<dim> center;        ///< m
     double             radius = 0.04; ///< m
     // file
     std::string file_name;
