@@ -3,13 +3,28 @@
 #ifndef softgrasp_tests_material_factory_h
 #define softgrasp_tests_material_factory_h
 
+#include <cmath>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <memory>
 #include <softgrasp/materials/material_library.h>
 #include <string>
 
 namespace softgrasp_tests
 {
+  /// The right stretch U = C^{1/2}, a deformation gradient with C (stress
+  /// depends on C only).
+  inline dealii::Tensor<2, 3>
+  stretch_from_C(const dealii::SymmetricTensor<2, 3> &C)
+  {
+    const auto                    eig = dealii::eigenvectors(C);
+    dealii::SymmetricTensor<2, 3> U;
+    for (const auto &p : eig)
+      U += std::sqrt(p.first) *
+           dealii::symmetrize(dealii::outer_product(p.second, p.second));
+    return dealii::Tensor<2, 3>(U);
+  }
+
   inline std::shared_ptr<const softgrasp::Material>
   material_from_prm(const std::string &fragment)
   {

@@ -15,17 +15,7 @@
 
 using namespace dealii;
 using namespace softgrasp;
-
-// F = C^{1/2} (the stress depends on C only)
-Tensor<2, 3>
-stretch_from_C(const SymmetricTensor<2, 3> &C)
-{
-  const auto            eig = eigenvectors(C);
-  SymmetricTensor<2, 3> U;
-  for (const auto &p : eig)
-    U += std::sqrt(p.first) * symmetrize(outer_product(p.second, p.second));
-  return Tensor<2, 3>(U);
-}
+using softgrasp_tests::stretch_from_C;
 
 // Returns the relative errors of tangent and stress against differences.
 std::pair<double, double>

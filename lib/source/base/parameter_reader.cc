@@ -14,8 +14,7 @@ namespace softgrasp
     passes.push_back(std::move(pass));
   }
 
-  void ParameterReader::read_file(ParameterHandler  &prm,
-                                  const std::string &filename) const
+  std::string ParameterReader::file_text(const std::string &filename)
   {
     std::ifstream file(filename);
     if (!file)
@@ -24,7 +23,13 @@ namespace softgrasp
                        "working directory.");
     std::stringstream text;
     text << file.rdbuf();
-    read_string(prm, text.str(), filename);
+    return text.str();
+  }
+
+  void ParameterReader::read_file(ParameterHandler  &prm,
+                                  const std::string &filename) const
+  {
+    read_string(prm, file_text(filename), filename);
   }
 
   void ParameterReader::read_string(ParameterHandler  &prm,

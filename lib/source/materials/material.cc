@@ -53,6 +53,13 @@ namespace softgrasp
       Response                   &response) const
   {
     evaluate_decoupled(F, directions, with_tangent, true, pressure, response);
+    push_forward(F, with_tangent, response);
+  }
+
+  void Material::push_forward(const Tensor<2, 3> &F,
+                              const bool          with_tangent,
+                              Response           &response)
+  {
     response.stress = Physics::Transformations::Contravariant::push_forward(
         response.stress, F);
     if (with_tangent)
@@ -120,11 +127,7 @@ namespace softgrasp
                                   Response                   &response) const
   {
     evaluate_material(F, directions, with_tangent, response);
-    response.stress = Physics::Transformations::Contravariant::push_forward(
-        response.stress, F);
-    if (with_tangent)
-      response.tangent = Physics::Transformations::Contravariant::push_forward(
-          response.tangent, F);
+    push_forward(F, with_tangent, response);
   }
 
   double Material::strain_energy(const Tensor<2, 3>         &F,

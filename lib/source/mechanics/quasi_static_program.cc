@@ -24,24 +24,18 @@ namespace softgrasp
 
   unsigned int QuasiStaticProgram::read_dimension(const std::string &filename)
   {
-    std::ifstream file(filename);
-    if (!file)
-      throw InputError("Cannot open the parameter file '" + filename +
-                       "'. Fix: check the path; it is read relative to the "
-                       "working directory.");
-    std::stringstream text;
-    text << file.rdbuf();
-    ParameterHandler prm;
+    const std::string text = ParameterReader::file_text(filename);
+    ParameterHandler  prm;
     declare_dimension(prm);
     ParameterReader reader;
     try
     {
-      prm.parse_input_from_string(text.str(), "", true);
+      prm.parse_input_from_string(text, "", true);
     }
     catch (const ExceptionBase &)
     {
       // reported with line numbers by the full read
-      reader.read_string(prm, text.str(), filename);
+      reader.read_string(prm, text, filename);
     }
     return prm.get_integer("Dimension");
   }

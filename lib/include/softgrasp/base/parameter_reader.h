@@ -26,6 +26,9 @@ namespace softgrasp
     /// Register a pass; passes run in the order they were added.
     void add_pass(Pass pass);
 
+    /// The text of @p filename; an InputError if it cannot be opened.
+    static std::string file_text(const std::string &filename);
+
     /// Parse the file @p filename into @p prm.
     void read_file(dealii::ParameterHandler &prm,
                    const std::string        &filename) const;

@@ -135,6 +135,11 @@ namespace softgrasp
                             const double                pressure,
                             Response                   &response) const;
 
+    /// S, CC -> tau, J cc in place.
+    static void push_forward(const dealii::Tensor<2, 3> &F,
+                             const bool                  with_tangent,
+                             Response                   &response);
+
     std::string                     material_name;
     std::unique_ptr<IsochoricModel> model;
     VolumetricEnergy                volumetric;
