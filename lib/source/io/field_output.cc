@@ -55,7 +55,8 @@ namespace softgrasp
   void FieldOutput<dim>::write(const SolidSystem<dim> &system,
                                const MaterialLibrary  &materials,
                                const double            time,
-                               const unsigned int      index)
+                               const unsigned int      index,
+                               const ExtraFields      &extra)
   {
     const auto    &dofs = system.dof_handler();
     const auto    &u    = system.ghosted_solution();
@@ -86,6 +87,8 @@ namespace softgrasp
       }
     data_out.add_data_vector(material_id, "material_id");
     data_out.add_data_vector(rank, "mpi_rank");
+    if (extra)
+      extra(data_out);
 
     const unsigned int degree = system.fe().degree;
     data_out.build_patches(

@@ -44,6 +44,8 @@ namespace softgrasp
           << ": |r| = " << std::scientific << std::setprecision(3)
           << state.residual_norm << " (tolerance " << tolerance
           << "), |g - u| = " << violation << std::defaultfloat;
+      if (system.has_nodal_conditions())
+        log << ", " << system.nodal_conditions_report();
       const bool increment_small =
           it > 0 && last_increment <=
                         parameters.increment_tolerance * system.length_scale();
@@ -90,7 +92,9 @@ namespace softgrasp
       // (r = f_ext - f_int): the full step is taken when |s(1)| <= 0.8
       // |s(0)|, otherwise alpha moves to the secant root of s; updates that
       // invert an element are halved. Skipped while boundary values are
-      // being imposed (then r(u) is not the gradient along du).
+      // being imposed (then r(u) is not the gradient along du) and with
+      // nodal conditions such as contact (then r is not an energy gradient;
+      // the semi-smooth Newton method takes full steps).
       u_start            = u;
       const double s0    = system.residual_dot(du);
       const bool   jump  = violation > 1e-12 * u_scale;
@@ -109,6 +113,7 @@ namespace softgrasp
           continue;
         }
         if (jump || !parameters.line_search || s0 <= 0 ||
+            system.has_nodal_conditions() ||
             ls >= parameters.max_line_search_steps)
           break;
         const double s = system.residual_dot(du);

@@ -16,6 +16,8 @@ namespace softgrasp
     MeshFactory<dim>::declare_parameters(prm);
     MaterialLibrary::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    RigidBodySet::declare_parameters(prm);
   }
 
   template <int dim>
@@ -23,6 +25,7 @@ namespace softgrasp
   {
     MaterialLibrary::add_passes(reader);
     BoundaryConditions<dim>::add_passes(reader);
+    RigidBodySet::add_passes(reader);
   }
 
   namespace
@@ -45,6 +48,8 @@ namespace softgrasp
       , mesh(parsed<MeshFactory<dim>>(prm))
       , material_library(parsed<MaterialLibrary>(prm))
       , boundary_conditions(parsed<BoundaryConditions<dim>>(prm))
+      , contact_parameters(parsed<ContactParameters>(prm))
+      , bodies(parsed<RigidBodySet>(prm))
       , timers(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
       , triangulation(comm)
       , newton(solver_parameters.newton, verbose_out)
@@ -52,6 +57,8 @@ namespace softgrasp
                      solver_parameters.output.base_name)
       , history_writer(solver_parameters.output.directory + "/" +
                        solver_parameters.output.base_name + "_history.csv")
+      , contact_writer(solver_parameters.output.directory + "/" +
+                       solver_parameters.output.base_name + "_contact.csv")
       , checkpoint(solver_parameters.output.directory)
   {
     verbose_out.set_condition(solver_parameters.output.verbose &&
@@ -74,15 +81,9 @@ namespace softgrasp
 
   template <int dim> void QuasiStaticSolver<dim>::setup_fresh()
   {
-    {
-      TimerOutput::Scope scope(timers, "setup");
-      mesh.create_coarse_mesh(triangulation);
-      mesh.refine(triangulation);
-    }
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         material_library.get(cell->material_id()); // throws if unmapped
-    solid->setup();
     state           = RunState();
     state.step_size = solver_parameters.time.step_size;
 
@@ -100,8 +101,46 @@ namespace softgrasp
     for (unsigned int p = 0; p < monitor_points.size(); ++p)
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back("u" + std::to_string(p) + "_" + axes[d]);
+    if (mortar_contact)
+      for (const char *name :
+           {"contact_active_nodes", "contact_slip_nodes", "active_set_changes"})
+        columns.push_back(name);
     history_writer.set_columns(columns);
     history_writer.rows.clear();
+    if (mortar_contact)
+    {
+      std::vector<std::string> contact_columns = {"step", "time"};
+      for (const auto &name : mortar_output->history_columns())
+        contact_columns.push_back(name);
+      contact_writer.set_columns(contact_columns);
+      contact_writer.rows.clear();
+    }
+  }
+
+  template <int dim> void QuasiStaticSolver<dim>::setup_contact()
+  {
+    const bool has_surface = !contact_parameters.slave_boundary_ids.empty();
+    if (has_surface && bodies.empty())
+      throw InputError("'Contact/Slave boundary ids' is set but there is no "
+                       "rigid body. Fix: name the bodies in 'Rigid "
+                       "bodies/Names' (or add them in code), or leave the "
+                       "slave boundary ids empty.");
+    if (!has_surface && !bodies.empty())
+      throw InputError("Rigid bodies are given but no contact surface. Fix: "
+                       "set 'Contact/Slave boundary ids' to the boundary ids "
+                       "of the surface the bodies touch.");
+    if (!has_surface)
+      return;
+    double shear_modulus = 0;
+    for (const auto id : material_library.material_ids())
+      shear_modulus = std::max(
+          shear_modulus, material_library.get(id).initial_shear_modulus());
+    mortar_contact = std::make_unique<MortarContact<dim>>(
+        contact_parameters, bodies, shear_modulus, timers);
+    mortar_contact->setup(*solid);
+    mortar_output = std::make_unique<ContactOutput<dim>>(*mortar_contact);
+    mortar_output->setup(*solid);
+    solid->set_nodal_conditions(mortar_contact.get());
   }
 
   template <int dim> void QuasiStaticSolver<dim>::setup_from_checkpoint()
@@ -113,6 +152,8 @@ namespace softgrasp
     state                  = checkpoint.load(triangulation, *solid);
     history_writer.columns = state.history_columns;
     history_writer.rows    = state.history_rows;
+    contact_writer.columns = state.contact_columns;
+    contact_writer.rows    = state.contact_rows;
     field_output.records   = state.output_records;
     previous_time          = state.time;
     pcout << "Resumed from the checkpoint at step " << state.step
@@ -137,9 +178,26 @@ namespace softgrasp
                                                timers);
     const bool resume = solver_parameters.checkpoint.resume;
     if (resume)
+    {
       setup_from_checkpoint();
+      setup_contact();
+    }
     else
+    {
+      {
+        TimerOutput::Scope scope(timers, "setup");
+        mesh.create_coarse_mesh(triangulation);
+        mesh.refine(triangulation);
+      }
+      solid->setup();
+      setup_contact();
       setup_fresh();
+    }
+    if (mortar_contact)
+    {
+      solid->update_ghosts();
+      mortar_contact->accept_step(*solid, state.time);
+    }
 
     pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells, "
           << solid->n_dofs() << " displacement dofs (Q"
@@ -243,6 +301,8 @@ namespace softgrasp
                                           std::string &report)
   {
     boundary_conditions.set_time(time);
+    if (mortar_contact)
+      mortar_contact->set_time(time);
     const auto result      = newton.solve(*solid);
     last_newton_iterations = result.iterations;
     last_linear_iterations = result.linear_iterations;
@@ -279,10 +339,25 @@ namespace softgrasp
     for (const auto &u : solid->point_displacements(monitor_points))
       for (unsigned int d = 0; d < dim; ++d)
         row.push_back(u[d]);
+    if (mortar_contact)
+    {
+      row.push_back(mortar_contact->n_active());
+      row.push_back(mortar_contact->n_slip());
+      row.push_back(mortar_contact->changes_in_step());
+      std::vector<double> contact_row = {double(state.step), time};
+      for (const double v : mortar_output->history_values(*solid))
+        contact_row.push_back(v);
+      contact_writer.add_row(contact_row);
+      mortar_contact->accept_step(*solid, time);
+    }
     history_writer.add_row(row);
     TimerOutput::Scope scope(timers, "output");
     if (Utilities::MPI::this_mpi_process(comm) == 0)
+    {
       history_writer.write();
+      if (mortar_contact)
+        contact_writer.write();
+    }
   }
 
   template <int dim>
@@ -292,7 +367,12 @@ namespace softgrasp
       return;
     TimerOutput::Scope scope(timers, "output");
     solid->update_ghosts();
-    field_output.write(*solid, material_library, time, state.n_outputs++);
+    typename FieldOutput<dim>::ExtraFields extra;
+    if (mortar_output)
+      extra = [this](DataOut<dim> &data_out)
+      { mortar_output->add_fields(*solid, data_out); };
+    field_output.write(
+        *solid, material_library, time, state.n_outputs++, extra);
     last_output_step = state.step;
   }
 
@@ -302,6 +382,8 @@ namespace softgrasp
     state.history_columns = history_writer.columns;
     state.history_rows    = history_writer.rows;
     state.output_records  = field_output.records;
+    state.contact_columns = contact_writer.columns;
+    state.contact_rows    = contact_writer.rows;
     solid->update_ghosts();
     checkpoint.save(triangulation, *solid, state);
   }
@@ -328,6 +410,29 @@ namespace softgrasp
   const SolverParameters &QuasiStaticSolver<dim>::parameters() const
   {
     return solver_parameters;
+  }
+
+  template <int dim> RigidBodySet &QuasiStaticSolver<dim>::rigid_bodies()
+  {
+    return bodies;
+  }
+
+  template <int dim>
+  const MortarContact<dim> *QuasiStaticSolver<dim>::contact() const
+  {
+    return mortar_contact.get();
+  }
+
+  template <int dim>
+  const ContactOutput<dim> *QuasiStaticSolver<dim>::contact_output() const
+  {
+    return mortar_output.get();
+  }
+
+  template <int dim>
+  const HistoryWriter &QuasiStaticSolver<dim>::contact_history() const
+  {
+    return contact_writer;
   }
 
   template <int dim> TimerOutput &QuasiStaticSolver<dim>::timer()

@@ -224,8 +224,19 @@ namespace softgrasp
       homogeneous_constraints.distribute_local_to_global(
           cell_rhs, copy.dof_indices, residual);
       if (with_matrix)
-        constraints.distribute_local_to_global(
-            copy.matrix, cell_rhs, copy.dof_indices, tangent, rhs);
+      {
+        if (nodal_conditions != nullptr)
+        {
+          FullMatrix<double> matrix(copy.matrix);
+          nodal_conditions->transform_cell_rows(
+              copy.dof_indices, matrix, cell_rhs);
+          constraints.distribute_local_to_global(
+              matrix, cell_rhs, copy.dof_indices, tangent, rhs);
+        }
+        else
+          constraints.distribute_local_to_global(
+              copy.matrix, cell_rhs, copy.dof_indices, tangent, rhs);
+      }
     };
     WorkStream::run(
         CellFilter(IteratorFilters::LocallyOwnedCell(), dofs.begin_active()),
@@ -259,6 +270,14 @@ namespace softgrasp
           communicator(), result.failed_J, failing_rank);
       return result;
     }
+    if (nodal_conditions != nullptr)
+    {
+      if (!with_matrix)
+        nodal_conditions->evaluate(*this);
+      else
+        nodal_conditions->add_node_terms(tangent, rhs);
+      nodal_conditions->apply_to_residual(residual);
+    }
     result.residual_norm = residual.l2_norm();
     result.force_scale   = std::max(f_int.l2_norm(), f_ext.l2_norm());
     return result;
@@ -270,7 +289,8 @@ namespace softgrasp
   {
     TimerOutput::Scope scope(timer, "linear solve");
     du.reinit(owned, communicator());
-    const bool symmetric = !boundary_conditions.has_follower_loads();
+    const bool symmetric = !boundary_conditions.has_follower_loads() &&
+                           nodal_conditions == nullptr;
     const LinearSolver::Result result =
         linear_solver.solve(tangent, du, rhs, symmetric);
     constraints.distribute(du);
@@ -346,6 +366,53 @@ namespace softgrasp
       }
     }
     return result;
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::set_nodal_conditions(NodalConditions<dim> *conditions)
+  {
+    nodal_conditions = conditions;
+  }
+
+  template <int dim> bool SolidSystem<dim>::has_nodal_conditions() const
+  {
+    return nodal_conditions != nullptr;
+  }
+
+  template <int dim>
+  std::string SolidSystem<dim>::nodal_conditions_report() const
+  {
+    return nodal_conditions ? nodal_conditions->iteration_report() : "";
+  }
+
+  template <int dim>
+  const TrilinosWrappers::MPI::Vector &SolidSystem<dim>::internal_forces() const
+  {
+    return f_int;
+  }
+
+  template <int dim>
+  const TrilinosWrappers::MPI::Vector &SolidSystem<dim>::external_forces() const
+  {
+    return f_ext;
+  }
+
+  template <int dim>
+  const AffineConstraints<double> &SolidSystem<dim>::constraint_set() const
+  {
+    return homogeneous_constraints;
+  }
+
+  template <int dim>
+  const IndexSet &SolidSystem<dim>::locally_owned_dofs() const
+  {
+    return owned;
+  }
+
+  template <int dim>
+  const IndexSet &SolidSystem<dim>::locally_relevant_dofs() const
+  {
+    return relevant;
   }
 
   template <int dim> void SolidSystem<dim>::update_ghosts()

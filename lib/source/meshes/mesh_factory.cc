@@ -78,6 +78,13 @@ namespace softgrasp
                       "2, 2, 2",
                       Patterns::List(Patterns::Integer(1)),
                       "Elements per direction before refinement. Unit: 1.");
+    prm.declare_entry("Grading",
+                      "1, 1, 1",
+                      Patterns::List(Patterns::Double(0)),
+                      "Per direction, the size ratio of neighbouring "
+                      "elements from the lower to the upper corner: 1 is "
+                      "uniform, > 1 grows towards the upper corner, < 1 "
+                      "refines towards it (e.g. near a contact). Unit: 1.");
     prm.leave_subsection();
     prm.enter_subsection("Cook's membrane");
     prm.declare_entry("Elements per edge",
@@ -138,6 +145,15 @@ namespace softgrasp
          Utilities::split_string_list(prm.get("Subdivisions")))
       subdivisions.push_back(Utilities::string_to_int(s));
     subdivisions.resize(dim, subdivisions.empty() ? 1 : subdivisions.back());
+    grading.clear();
+    for (const std::string &s :
+         Utilities::split_string_list(prm.get("Grading")))
+      grading.push_back(Utilities::string_to_double(s));
+    grading.resize(dim, grading.empty() ? 1.0 : grading.back());
+    for (const double g : grading)
+      if (!(g > 0))
+        throw InputError("Parameter 'Mesh/Block/Grading' must be positive. "
+                         "Fix: give size ratios > 0 (1 is uniform).");
     for (unsigned int d = 0; d < dim; ++d)
       if (!(upper[d] > lower[d]) && type == Type::block)
         throw InputError("Parameter 'Mesh/Block/Upper corner' must exceed "
@@ -170,9 +186,21 @@ namespace softgrasp
     switch (type)
     {
     case Type::block:
+    {
+      std::vector<std::vector<double>> steps(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        double total = 0;
+        for (unsigned int i = 0; i < subdivisions[d]; ++i)
+          total += std::pow(grading[d], i);
+        for (unsigned int i = 0; i < subdivisions[d]; ++i)
+          steps[d].push_back((upper[d] - lower[d]) * std::pow(grading[d], i) /
+                             total);
+      }
       GridGenerator::subdivided_hyper_rectangle(
-          triangulation, subdivisions, lower, upper, true);
+          triangulation, steps, lower, upper, true);
       break;
+    }
     case Type::cook_membrane:
       Meshes::cook_membrane(
           triangulation, elements_per_edge, thickness, layers);

@@ -19,12 +19,14 @@ namespace softgrasp
     std::vector<std::string>                    history_columns;
     std::vector<std::vector<double>>            history_rows;
     std::vector<std::pair<double, std::string>> output_records;
+    std::vector<std::string>                    contact_columns;
+    std::vector<std::vector<double>>            contact_rows;
 
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {
       archive &time &step_size &step &n_outputs &history_columns &history_rows
-          &output_records;
+          &output_records &contact_columns &contact_rows;
     }
   };
 

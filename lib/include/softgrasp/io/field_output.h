@@ -1,6 +1,8 @@
 #ifndef softgrasp_io_field_output_h
 #define softgrasp_io_field_output_h
 
+#include <deal.II/numerics/data_out.h>
+#include <functional>
 #include <softgrasp/materials/material_library.h>
 #include <softgrasp/mechanics/solid_system.h>
 #include <string>
@@ -26,11 +28,16 @@ namespace softgrasp
   public:
     FieldOutput(std::string directory, std::string base_name);
 
+    /// Adds further fields (e.g. contact) to the DataOut before patches
+    /// are built; the data it adds must live until write() returns.
+    using ExtraFields = std::function<void(dealii::DataOut<dim> &)>;
+
     /// Write the fields of @p system at @p time (s) as output @p index.
     void write(const SolidSystem<dim> &system,
                const MaterialLibrary  &materials,
                const double            time,
-               const unsigned int      index);
+               const unsigned int      index,
+               const ExtraFields      &extra = ExtraFields());
 
     /// (time, file) of every .vtu written so far, for the .pvd and restarts.
     std::vector<std::pair<double, std::string>> records;

@@ -8,6 +8,8 @@
 #include <memory>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/base/progress_reporter.h>
+#include <softgrasp/contact/contact_output.h>
+#include <softgrasp/contact/mortar_contact.h>
 #include <softgrasp/io/checkpoint.h>
 #include <softgrasp/io/field_output.h>
 #include <softgrasp/io/history_writer.h>
@@ -17,6 +19,7 @@
 #include <softgrasp/mechanics/solid_system.h>
 #include <softgrasp/mechanics/solver_parameters.h>
 #include <softgrasp/meshes/mesh_factory.h>
+#include <softgrasp/rigid/rigid_body_set.h>
 #include <stdexcept>
 
 namespace softgrasp
@@ -57,10 +60,18 @@ namespace softgrasp
     const HistoryWriter    &history() const;
     const MaterialLibrary  &materials() const;
     const SolverParameters &parameters() const;
+    /// The rigid bodies; add bodies or reference normals before run().
+    RigidBodySet &rigid_bodies();
+    /// The contact, if the run has one (after run() started).
+    const MortarContact<dim> *contact() const;
+    const ContactOutput<dim> *contact_output() const;
+    /// Per-step contact forces per geom and body (CSV).
+    const HistoryWriter &contact_history() const;
     /// Wall-clock times per phase (setup, assembly, linear solve, output).
     dealii::TimerOutput &timer();
 
   private:
+    void setup_contact();
     void setup_fresh();
     void setup_from_checkpoint();
     bool solve_step(const double time, std::string &failure_report);
@@ -78,12 +89,17 @@ namespace softgrasp
     MeshFactory<dim>                                  mesh;
     MaterialLibrary                                   material_library;
     BoundaryConditions<dim>                           boundary_conditions;
+    ContactParameters                                 contact_parameters;
+    RigidBodySet                                      bodies;
     dealii::TimerOutput                               timers;
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<SolidSystem<dim>>                 solid;
+    std::unique_ptr<MortarContact<dim>>               mortar_contact;
+    std::unique_ptr<ContactOutput<dim>>               mortar_output;
     NewtonSolver<dim>                                 newton;
     FieldOutput<dim>                                  field_output;
     HistoryWriter                                     history_writer;
+    HistoryWriter                                     contact_writer;
     Checkpoint<dim>                                   checkpoint;
     ProgressReporter                                  progress;
     RunState                                          state;

@@ -14,6 +14,7 @@
 #include <softgrasp/mechanics/boundary_conditions.h>
 #include <softgrasp/mechanics/cell_assembler.h>
 #include <softgrasp/mechanics/linear_solver.h>
+#include <softgrasp/mechanics/nodal_conditions.h>
 #include <softgrasp/mechanics/solver_parameters.h>
 
 namespace softgrasp
@@ -77,6 +78,23 @@ namespace softgrasp
     /// Largest extent (m) of the reference mesh's bounding box.
     double length_scale() const;
 
+    /**
+     * Let @p conditions replace the equations of the nodes they govern
+     * (e.g. contact); nullptr removes them. Not owned.
+     */
+    void set_nodal_conditions(NodalConditions<dim> *conditions);
+    bool has_nodal_conditions() const;
+    /// The nodal conditions' line for the Newton log ("" without them).
+    std::string nodal_conditions_report() const;
+
+    /// f_int and f_ext (N) of the last assembly (owned entries valid).
+    const dealii::TrilinosWrappers::MPI::Vector &internal_forces() const;
+    const dealii::TrilinosWrappers::MPI::Vector &external_forces() const;
+    /// Hanging-node and Dirichlet constraints (homogeneous form).
+    const dealii::AffineConstraints<double> &constraint_set() const;
+    const dealii::IndexSet                  &locally_owned_dofs() const;
+    const dealii::IndexSet                  &locally_relevant_dofs() const;
+
     /// Make the ghosted copy agree with solution().
     void update_ghosts();
 
@@ -111,8 +129,9 @@ namespace softgrasp
     dealii::TrilinosWrappers::SparseMatrix     tangent;
     dealii::TrilinosWrappers::MPI::Vector      u, u_ghosted;
     dealii::TrilinosWrappers::MPI::Vector      rhs, residual, f_int, f_ext;
-    std::vector<std::vector<dealii::IndexSet>> reaction_dofs;   ///< [id][c]
-    double                                     domain_size = 1; ///< m
+    std::vector<std::vector<dealii::IndexSet>> reaction_dofs; ///< [id][c]
+    double                                     domain_size      = 1; ///< m
+    NodalConditions<dim>                      *nodal_conditions = nullptr;
   };
 } // namespace softgrasp
 

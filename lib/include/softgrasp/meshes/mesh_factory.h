@@ -48,6 +48,7 @@ namespace softgrasp
     // block
     dealii::Point<dim>        lower, upper; ///< m
     std::vector<unsigned int> subdivisions;
+    std::vector<double>       grading; ///< size ratio of neighbours (1)
     // Cook's membrane
     unsigned int elements_per_edge = 8;
     double       thickness         = 1e-3; ///< m, 3D only

@@ -1,0 +1,71 @@
+// Benchmark of mortar contact (not a test): the Hertz indentation of
+// tests/contact_factory.h (rigid sphere R = 10 mm, d = 0.1 mm, neo-Hookean
+// mu = 10 kPa, nu = 0.3, quarter model, frictionless) on a graded block.
+//
+//   hertz_contact <n> <ratio> <size (m)> [degree] [steps] [direct|iterative]
+//   mpirun -np 2 hertz_contact 20 1.3 0.05 1 4 iterative
+//
+// Prints the force and the contact radius against Hertz's values, Newton
+// iterations and active-set changes per load step, and the wall time per
+// phase (contact search and nodal conditions, assembly, linear solve).
+#include "../tests/contact_factory.h"
+
+#include <deal.II/base/mpi.h>
+#include <iostream>
+#include <softgrasp/base/parameter_reader.h>
+
+using namespace dealii;
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm  = MPI_COMM_WORLD;
+  const unsigned int               n     = argc > 1 ? std::stoi(argv[1]) : 12;
+  const double                     ratio = argc > 2 ? std::stod(argv[2]) : 1.3;
+  const double                     size  = argc > 3 ? std::stod(argv[3]) : 0.03;
+  const unsigned int               degree = argc > 4 ? std::stoi(argv[4]) : 1;
+  const unsigned int               steps  = argc > 5 ? std::stoi(argv[5]) : 4;
+  const std::string                solver_type = argc > 6 ? argv[6] : "direct";
+
+  ParameterHandler prm;
+  softgrasp::QuasiStaticSolver<3>::declare_parameters(prm);
+  softgrasp::ParameterReader reader;
+  softgrasp::QuasiStaticSolver<3>::add_passes(reader);
+  reader.read_string(
+      prm,
+      softgrasp_tests::hertz_prm(
+          n, ratio, size, degree, steps, "hertz-benchmark", solver_type),
+      "benchmark");
+  softgrasp::QuasiStaticSolver<3> solver(comm, prm);
+  solver.run();
+
+  const auto   exact  = softgrasp_tests::hertz_solution();
+  const auto   forces = solver.contact_output()->geom_forces(solver.system());
+  const double force  = 4 * forces[0][0].force[2];
+  const double radius = softgrasp_tests::edge_contact_radius(solver);
+  const double area_radius = std::sqrt(4 * forces[0][0].area / M_PI);
+  if (Utilities::MPI::this_mpi_process(comm) == 0)
+  {
+    const auto &history = solver.history();
+    double      newton = 0, changes = 0;
+    for (std::size_t row = 1; row < history.rows.size(); ++row)
+    {
+      newton += history.value(row, "newton_iterations");
+      changes += history.value(row, "active_set_changes");
+    }
+    const double n_steps = history.rows.size() - 1;
+    std::cout << "HERTZ n=" << n << " ratio=" << ratio << " size=" << size
+              << " Q" << degree << " dofs=" << solver.system().n_dofs()
+              << " ranks=" << Utilities::MPI::n_mpi_processes(comm)
+              << "\n  force " << force << " N, error "
+              << 100 * (force / exact.force - 1) << " %"
+              << "\n  contact radius (gap edge) " << radius * 1e3
+              << " mm, error " << 100 * (radius / exact.radius - 1) << " %"
+              << "\n  contact radius (closed area) " << area_radius * 1e3
+              << " mm, error " << 100 * (area_radius / exact.radius - 1)
+              << " %\n  Newton iterations per step " << newton / n_steps
+              << ", active-set changes per step " << changes / n_steps
+              << std::endl;
+  }
+}

@@ -1,0 +1,80 @@
+#ifndef softgrasp_contact_contact_output_h
+#define softgrasp_contact_contact_output_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/numerics/data_out.h>
+#include <softgrasp/contact/mortar_contact.h>
+#include <string>
+#include <vector>
+
+namespace softgrasp
+{
+  /**
+   * The contact force on one rigid geom (e.g. a finger link), exerted by
+   * the tissue: what a force sensor in the link would measure. In 2D the
+   * forces are per unit thickness (N/m) and z entries are zero.
+   */
+  struct GeomContactForce
+  {
+    Eigen::Vector3d force  = Eigen::Vector3d::Zero();       ///< resultant F (N)
+    Eigen::Vector3d moment = Eigen::Vector3d::Zero();       ///< about the geom
+                                                            ///< origin (N m)
+    Eigen::Vector3d normal       = Eigen::Vector3d::Zero(); ///< reference n (1)
+    Eigen::Vector3d normal_part  = Eigen::Vector3d::Zero(); ///< (n n^T) F
+    Eigen::Vector3d lateral_part = Eigen::Vector3d::Zero(); ///< (I-nn^T) F
+    /// The frictional traction alone, integrated: sum over the patch of
+    /// each node's tangential force (N). lateral_part - friction is the
+    /// lateral resistance from pressure on the tissue wrapping the geom.
+    Eigen::Vector3d friction = Eigen::Vector3d::Zero();
+    double          area     = 0; ///< contact area, deformed (m^2; m in 2D)
+    unsigned int    active   = 0; ///< closed nodes
+    unsigned int    slipping = 0; ///< sliding nodes
+  };
+
+  /**
+   * Output of a MortarContact: per geom and per body force resultants with
+   * the normal/lateral split f_n = (n n^T) F, f_mu = (I - n n^T) F, where
+   * n is the geom's reference normal (given, or the area-weighted mean
+   * normal of its contact patch), rows for the contact history table, and
+   * surface fields for the VTU files: contact traction (Pa), contact
+   * pressure (Pa), gap (m) and status (0 open, 1 stick, 2 slip).
+   */
+  template <int dim> class ContactOutput
+  {
+  public:
+    explicit ContactOutput(const MortarContact<dim> &contact);
+
+    /// Build the scalar field numbering (after the system's setup()).
+    void setup(const SolidSystem<dim> &system);
+
+    /// Forces on every geom, [body][geom], at the current state.
+    /// Collective.
+    std::vector<std::vector<GeomContactForce>>
+    geom_forces(const SolidSystem<dim> &system) const;
+
+    /// Column names of history_values().
+    std::vector<std::string> history_columns() const;
+    /// Per geom and per body quantities at the current state. Collective.
+    std::vector<double> history_values(const SolidSystem<dim> &system) const;
+
+    /// Add the contact surface fields to @p data_out. Collective.
+    void add_fields(const SolidSystem<dim> &system,
+                    dealii::DataOut<dim>   &data_out);
+
+    /// Deformed nodal areas int N_j da (m^2; m in 2D) of the owned slave
+    /// nodes, in the order of MortarContact::nodes(). Collective.
+    std::vector<double> current_areas(const SolidSystem<dim> &system) const;
+
+  private:
+    const MortarContact<dim>                &contact;
+    std::unique_ptr<dealii::FE_Q<dim>>       scalar_fe;
+    std::unique_ptr<dealii::DoFHandler<dim>> scalar_dofs;
+    /// Scalar dof of each owned node's location.
+    std::vector<dealii::types::global_dof_index> scalar_index;
+    dealii::TrilinosWrappers::MPI::Vector        traction;
+    dealii::TrilinosWrappers::MPI::Vector        pressure, gap, status;
+  };
+} // namespace softgrasp
+
+#endif

@@ -1,0 +1,120 @@
+// Contact patch test: a flat rigid plate (a MuJoCo plane geom facing down)
+// compresses a block by 10 % without friction, on randomly distorted
+// meshes. The exact state is homogeneous uniaxial stress (3D) or plane
+// strain (2D), so the contact pressure must be uniform to round-off:
+//  - every closed node carries the same nominal pressure f_n / D_j
+//    (D_j = int N_j dA, the dual mortar weight);
+//  - in 3D that pressure is the nominal stress of the material library's
+//    homogeneous uniaxial solution at stretch 0.9;
+//  - the plate force balances the support reaction.
+// Q1 and Q2, 2D and 3D.
+#include "../contact_factory.h"
+#include "../material_factory.h"
+#include "../solver_factory.h"
+#include "../tests.h"
+
+#include <softgrasp/materials/homogeneous_loading.h>
+
+using namespace softgrasp_tests;
+
+template <int dim>
+void
+run(const unsigned int degree)
+{
+  const double       H = 0.01, stretch = 0.9;
+  std::ostringstream prm;
+  prm << (dim == 3
+              ? block("0, 0, 0", "0.01, 0.01, 0.01", "3, 3, 3", "1, 1, 1", 0.2)
+              : block("0, 0", "0.01, 0.01", "4, 3", "1, 1", 0.2))
+      << "subsection Finite element\n set Polynomial degree = " << degree
+      << "\nend\n"
+      << neo_hookean(10e3, 0.3) << "subsection Boundary conditions\n"
+      << " set Dirichlet boundary ids = 0, 2" << (dim == 3 ? ", 4" : "") << "\n"
+      << " subsection Dirichlet boundary 0\n  set Components = x\n end\n"
+      << " subsection Dirichlet boundary 2\n  set Components = y\n end\n"
+      << (dim == 3 ? " subsection Dirichlet boundary 4\n  set Components = "
+                     "z\n end\n"
+                   : "")
+      << "end\n"
+      << contact(dim == 3 ? "5" : "3", 0);
+  // The plate: a plane whose normal (local z) points down (3D: along -z)
+  // or along -y (2D: the plane problem lies in x-y).
+  const std::string up = dim == 3 ? "0, 0, " : "0, ";
+  prm << rigid_body(
+             "plate",
+             "face",
+             "plane",
+             "1",
+             "0: " + std::string(dim == 3 ? "0, 0, 0.01" : "0, 0.01, 0") +
+                 ", 1, 0, 0, 0; 1: " +
+                 std::string(dim == 3 ? "0, 0, 0.009" : "0, 0.009, 0") +
+                 ", 1, 0, 0, 0",
+             dim == 3 ? "0, 1, 0, 0"
+                      : "0.70710678118654752, 0.70710678118654752, 0, 0")
+      << "subsection Time\n set End time = 1\n set Time step = 0.25\nend\n"
+      << "subsection Newton\n set Relative tolerance = 1e-12\nend\n"
+      << "subsection Linear solver\n set Type = direct\nend\n"
+      << "subsection Output\n set Directory = output-patch\n"
+      << " set VTU interval = 0\n set Verbose = false\nend\n";
+  auto solver = make_solver<dim>(prm.str());
+  solver->run();
+
+  double p_min = 1e300, p_max = -1e300;
+  for (const auto &node : solver->contact()->nodes())
+  {
+    SG_CHECK(node.status != softgrasp::ContactStatus::inactive,
+             "every node of the pressed face is closed");
+    const double p = node.normal.dot(node.force) / node.reference_area;
+    p_min          = std::min(p_min, p);
+    p_max          = std::max(p_max, p);
+  }
+  p_min = dealii::Utilities::MPI::min(p_min, MPI_COMM_WORLD);
+  p_max = dealii::Utilities::MPI::max(p_max, MPI_COMM_WORLD);
+
+  const auto   forces = solver->contact_output()->geom_forces(solver->system());
+  const double plate  = forces[0][0].force[dim - 1];
+  const auto  &history = solver->history();
+  // the support's force on the body equals the body's force on the plate
+  const double support = history.value(
+      history.rows.size() - 1, dim == 3 ? "reaction_4_z" : "reaction_2_y");
+  dealii::deallog << dim << "D Q" << degree << ": nominal pressure "
+                  << 0.5 * (p_min + p_max) << " Pa, spread "
+                  << ((p_max - p_min) / p_max < 1e-9) << ", plate force "
+                  << plate << " N";
+  SG_CHECK((p_max - p_min) / p_max < 1e-9, "uniform contact pressure");
+  SG_CHECK_CLOSE(plate, support, 1e-9, 0, "plate force = support reaction");
+  if (dim == 3)
+  {
+    const auto material =
+        material_from_prm("set Model = neo-Hookean\nset Density = 1000\n"
+                          "subsection neo-Hookean\nset Shear modulus = 1e4\n"
+                          "end\nsubsection Volumetric\nset Poisson's ratio = "
+                          "0.3\nend");
+    const auto exact = softgrasp::HomogeneousLoading::uniaxial(
+        *material, material->structural_directions({}), stretch);
+    dealii::deallog << " (uniaxial solution " << -exact.nominal_stress
+                    << " Pa)";
+    SG_CHECK_CLOSE(p_max,
+                   -exact.nominal_stress,
+                   1e-9,
+                   0,
+                   "pressure = uniaxial nominal stress");
+    SG_CHECK_CLOSE(
+        plate, -exact.nominal_stress * 1e-4, 1e-9, 0, "plate force = P A_0");
+  }
+  dealii::deallog << std::endl;
+  (void)H;
+  (void)up;
+}
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog(8);
+  for (const unsigned int degree : {1u, 2u})
+  {
+    run<2>(degree);
+    run<3>(degree);
+  }
+}
