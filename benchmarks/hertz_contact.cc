@@ -3,7 +3,8 @@
 // mu = 10 kPa, nu = 0.3, quarter model, frictionless) on a graded block.
 //
 //   hertz_contact <n> <ratio> <size (m)> [degree] [steps] [direct|iterative]
-//   mpirun -np 2 hertz_contact 20 1.3 0.05 1 4 iterative
+//                 [global refinements]
+//   mpirun -np 2 hertz_contact 8 1.5 0.05 2 4 iterative 1
 //
 // Prints the force and the contact radius against Hertz's values, Newton
 // iterations and active-set changes per load step, and the wall time per
@@ -27,16 +28,22 @@ main(int argc, char **argv)
   const unsigned int               degree = argc > 4 ? std::stoi(argv[4]) : 1;
   const unsigned int               steps  = argc > 5 ? std::stoi(argv[5]) : 4;
   const std::string                solver_type = argc > 6 ? argv[6] : "direct";
+  const unsigned int refinements = argc > 7 ? std::stoi(argv[7]) : 0;
 
   ParameterHandler prm;
   softgrasp::QuasiStaticSolver<3>::declare_parameters(prm);
   softgrasp::ParameterReader reader;
   softgrasp::QuasiStaticSolver<3>::add_passes(reader);
-  reader.read_string(
-      prm,
-      softgrasp_tests::hertz_prm(
-          n, ratio, size, degree, steps, "hertz-benchmark", solver_type),
-      "benchmark");
+  reader.read_string(prm,
+                     softgrasp_tests::hertz_prm(n,
+                                                ratio,
+                                                size,
+                                                degree,
+                                                steps,
+                                                "hertz-benchmark",
+                                                solver_type,
+                                                refinements),
+                     "benchmark");
   softgrasp::QuasiStaticSolver<3> solver(comm, prm);
   solver.run();
 
@@ -56,7 +63,8 @@ main(int argc, char **argv)
     }
     const double n_steps = history.rows.size() - 1;
     std::cout << "HERTZ n=" << n << " ratio=" << ratio << " size=" << size
-              << " Q" << degree << " dofs=" << solver.system().n_dofs()
+              << " refinements=" << refinements << " Q" << degree
+              << " dofs=" << solver.system().n_dofs()
               << " ranks=" << Utilities::MPI::n_mpi_processes(comm)
               << "\n  force " << force << " N, error "
               << 100 * (force / exact.force - 1) << " %"

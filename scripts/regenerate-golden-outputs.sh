@@ -24,7 +24,7 @@ while IFS= read -r golden; do
   [[ "$file" =~ mpirun=([0-9]+) ]] && variant="mpirun=${BASH_REMATCH[1]}"
   test="$category/$name${variant:+.$variant}.$type"
   [[ "$test" =~ $filter ]] || continue
-  log=$(ctest --test-dir "$build" -R "^${test//./\\.}\$" 2>&1 || true)
+  log=$(ctest --test-dir "$build" -R "^${test//./\\.}\$" 2>&1 </dev/null || true)
   run_dir="$build/tests/$category/$name.$type${variant:+/$variant}"
   if grep -qE "BUILD failed|RUN failed|No tests were found" <<<"$log" ||
      [ ! -s "$run_dir/output" ]; then

@@ -87,7 +87,8 @@ namespace softgrasp_tests
                                const unsigned int degree,
                                const unsigned int steps,
                                const std::string &directory,
-                               const std::string &linear_solver = "direct")
+                               const std::string &linear_solver = "direct",
+                               const unsigned int refinements   = 0)
   {
     std::ostringstream s, sub, grading;
     sub << n << ", " << n << ", " << n;
@@ -97,6 +98,8 @@ namespace softgrasp_tests
                std::to_string(size) + ", " + std::to_string(size) + ", 0",
                sub.str(),
                grading.str())
+      << "subsection Mesh\n set Global refinements = " << refinements
+      << "\nend\n"
       << "subsection Finite element\n set Polynomial degree = " << degree
       << "\nend\n"
       << neo_hookean(10e3, 0.3) << "subsection Boundary conditions\n"
