@@ -3,7 +3,7 @@
 // mu = 10 kPa, nu = 0.3, quarter model, frictionless) on a graded block.
 //
 //   hertz_contact <n> <ratio> <size (m)> [degree] [steps] [direct|iterative]
-//                 [global refinements]
+//                 [global refinements] [nu] [depth (m)]
 //   mpirun -np 2 hertz_contact 8 1.5 0.05 2 4 iterative 1
 //
 // Prints the force and the contact radius against Hertz's values, Newton
@@ -29,6 +29,8 @@ main(int argc, char **argv)
   const unsigned int               steps  = argc > 5 ? std::stoi(argv[5]) : 4;
   const std::string                solver_type = argc > 6 ? argv[6] : "direct";
   const unsigned int refinements = argc > 7 ? std::stoi(argv[7]) : 0;
+  const double       nu          = argc > 8 ? std::stod(argv[8]) : 0.3;
+  const double       depth       = argc > 9 ? std::stod(argv[9]) : 1e-4;
 
   ParameterHandler prm;
   softgrasp::QuasiStaticSolver<3>::declare_parameters(prm);
@@ -42,12 +44,14 @@ main(int argc, char **argv)
                                                 steps,
                                                 "hertz-benchmark",
                                                 solver_type,
-                                                refinements),
+                                                refinements,
+                                                nu,
+                                                depth),
                      "benchmark");
   softgrasp::QuasiStaticSolver<3> solver(comm, prm);
   solver.run();
 
-  const auto   exact  = softgrasp_tests::hertz_solution();
+  const auto   exact  = softgrasp_tests::hertz_solution(nu, depth);
   const auto   forces = solver.contact_output()->geom_forces(solver.system());
   const double force  = 4 * forces[0][0].force[2];
   const double radius = softgrasp_tests::edge_contact_radius(solver);

@@ -88,7 +88,9 @@ namespace softgrasp_tests
                                const unsigned int steps,
                                const std::string &directory,
                                const std::string &linear_solver = "direct",
-                               const unsigned int refinements   = 0)
+                               const unsigned int refinements   = 0,
+                               const double       nu            = 0.3,
+                               const double       depth         = 1e-4)
   {
     std::ostringstream s, sub, grading;
     sub << n << ", " << n << ", " << n;
@@ -102,7 +104,7 @@ namespace softgrasp_tests
       << "\nend\n"
       << "subsection Finite element\n set Polynomial degree = " << degree
       << "\nend\n"
-      << neo_hookean(10e3, 0.3) << "subsection Boundary conditions\n"
+      << neo_hookean(10e3, nu) << "subsection Boundary conditions\n"
       << " set Dirichlet boundary ids = 0, 2, 4\n"
       << " subsection Dirichlet boundary 0\n  set Components = x\n end\n"
       << " subsection Dirichlet boundary 2\n  set Components = y\n end\n"
@@ -113,7 +115,8 @@ namespace softgrasp_tests
                     "ball",
                     "sphere",
                     "0.01",
-                    "0: 0, 0, 0.01, 1, 0, 0, 0; 1: 0, 0, 0.0099, 1, 0, 0, 0")
+                    "0: 0, 0, 0.01, 1, 0, 0, 0; 1: 0, 0, " +
+                        std::to_string(0.01 - depth) + ", 1, 0, 0, 0")
       << "subsection Time\n set End time = 1\n set Time step = " << 1.0 / steps
       << "\nend\n"
       << "subsection Linear solver\n set Type = " << linear_solver << "\nend\n"
@@ -128,9 +131,10 @@ namespace softgrasp_tests
     double force;  ///< (4/3) E* sqrt(R) d^3/2 (N)
     double radius; ///< sqrt(R d) (m)
   };
-  inline HertzSolution hertz_solution()
+  inline HertzSolution hertz_solution(const double nu = 0.3,
+                                      const double d  = 1e-4)
   {
-    const double mu = 10e3, nu = 0.3, R = 0.01, d = 1e-4;
+    const double mu = 10e3, R = 0.01;
     const double E_star = 2 * mu * (1 + nu) / (1 - nu * nu);
     return {4.0 / 3.0 * E_star * std::sqrt(R) * std::pow(d, 1.5),
             std::sqrt(R * d)};

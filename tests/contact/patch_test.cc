@@ -7,19 +7,32 @@
 //  - in 3D that pressure is the nominal stress of the material library's
 //    homogeneous uniaxial solution at stretch 0.9;
 //  - the plate force balances the support reaction.
-// Q1 and Q2, 2D and 3D.
+// Q1 and Q2, 2D and 3D; in 3D also with the plate as a triangle-mesh geom
+// (a box read from an OBJ file) instead of a plane.
 #include "../contact_factory.h"
 #include "../material_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
 
+#include <fstream>
 #include <softgrasp/materials/homogeneous_loading.h>
 
 using namespace softgrasp_tests;
 
+/// A 40 x 40 x 10 mm box as an OBJ file (a rigid platen as a mesh geom).
+void
+write_platen_obj()
+{
+  std::ofstream obj("platen.obj");
+  for (unsigned int i = 0; i < 8; ++i)
+    obj << "v " << (i & 1 ? 0.02 : -0.02) << " " << (i & 2 ? 0.02 : -0.02)
+        << " " << (i & 4 ? 0.005 : -0.005) << "\n";
+  obj << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+}
+
 template <int dim>
 void
-run(const unsigned int degree)
+run(const unsigned int degree, const bool mesh_platen = false)
 {
   const double       H = 0.01, stretch = 0.9;
   std::ostringstream prm;
@@ -40,18 +53,26 @@ run(const unsigned int degree)
   // The plate: a plane whose normal (local z) points down (3D: along -z)
   // or along -y (2D: the plane problem lies in x-y).
   const std::string up = dim == 3 ? "0, 0, " : "0, ";
-  prm << rigid_body(
-             "plate",
-             "face",
-             "plane",
-             "1",
-             "0: " + std::string(dim == 3 ? "0, 0, 0.01" : "0, 0.01, 0") +
-                 ", 1, 0, 0, 0; 1: " +
-                 std::string(dim == 3 ? "0, 0, 0.009" : "0, 0.009, 0") +
-                 ", 1, 0, 0, 0",
-             dim == 3 ? "0, 1, 0, 0"
-                      : "0.70710678118654752, 0.70710678118654752, 0, 0")
-      << "subsection Time\n set End time = 1\n set Time step = 0.25\nend\n"
+  if (mesh_platen)
+    prm << "subsection Rigid bodies\n set Names = plate\n"
+        << " subsection Body plate\n  set Geom names = face\n"
+        << "  set Trajectory = 0: 0, 0, 0.015, 1, 0, 0, 0; "
+           "1: 0, 0, 0.014, 1, 0, 0, 0\n"
+        << "  subsection Geom face\n   set Type = mesh\n"
+        << "   set Mesh file = platen.obj\n  end\n end\nend\n";
+  else
+    prm << rigid_body(
+        "plate",
+        "face",
+        "plane",
+        "1",
+        "0: " + std::string(dim == 3 ? "0, 0, 0.01" : "0, 0.01, 0") +
+            ", 1, 0, 0, 0; 1: " +
+            std::string(dim == 3 ? "0, 0, 0.009" : "0, 0.009, 0") +
+            ", 1, 0, 0, 0",
+        dim == 3 ? "0, 1, 0, 0"
+                 : "0.70710678118654752, 0.70710678118654752, 0, 0");
+  prm << "subsection Time\n set End time = 1\n set Time step = 0.25\nend\n"
       << "subsection Newton\n set Relative tolerance = 1e-12\nend\n"
       << "subsection Linear solver\n set Type = direct\nend\n"
       << "subsection Output\n set Directory = output-patch\n"
@@ -77,10 +98,11 @@ run(const unsigned int degree)
   // the support's force on the body equals the body's force on the plate
   const double support = history.value(
       history.rows.size() - 1, dim == 3 ? "reaction_4_z" : "reaction_2_y");
-  dealii::deallog << dim << "D Q" << degree << ": nominal pressure "
-                  << 0.5 * (p_min + p_max) << " Pa, spread "
-                  << ((p_max - p_min) / p_max < 1e-9) << ", plate force "
-                  << plate << " N";
+  dealii::deallog << dim << "D Q" << degree
+                  << (mesh_platen ? ", platen as an OBJ mesh" : "")
+                  << ": nominal pressure " << 0.5 * (p_min + p_max)
+                  << " Pa, spread " << ((p_max - p_min) / p_max < 1e-9)
+                  << ", plate force " << plate << " N";
   SG_CHECK((p_max - p_min) / p_max < 1e-9, "uniform contact pressure");
   SG_CHECK_CLOSE(plate, support, 1e-9, 0, "plate force = support reaction");
   if (dim == 3)
@@ -117,4 +139,6 @@ main(int argc, char **argv)
     run<2>(degree);
     run<3>(degree);
   }
+  write_platen_obj();
+  run<3>(1, true);
 }

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/rigid/rigid_body_set.h>
+#include <softgrasp/rigid/triangle_mesh_shape.h>
 #include <sstream>
 
 namespace softgrasp
@@ -69,9 +70,22 @@ namespace softgrasp
       prm.declare_entry(
           "Type",
           "sphere",
-          Patterns::Selection("sphere|capsule|cylinder|box|ellipsoid|plane"),
-          "MuJoCo geom type. The axis of capsules and cylinders "
-          "and the normal of a plane are the local z axis.");
+          Patterns::Selection(
+              "sphere|capsule|cylinder|box|ellipsoid|plane|mesh"),
+          "MuJoCo geom type. The axis of capsules and cylinders and the "
+          "normal of a plane are the local z axis; a mesh is a closed "
+          "triangle mesh read from 'Mesh file'.");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "STL (ASCII or binary) or OBJ file of a closed "
+                        "triangle surface, for Type = mesh; coordinates in "
+                        "the geom frame.");
+      prm.declare_entry("Mesh scale",
+                        "1",
+                        Patterns::Double(0),
+                        "Factor from the mesh file's length unit to m (e.g. "
+                        "0.001 for mm). Unit: m per file unit.");
       prm.declare_entry("Size",
                         "0.01",
                         Patterns::List(Patterns::Double(0), 1, 3),
@@ -197,7 +211,21 @@ namespace softgrasp
         local.orientation =
             quaternion_in(prm.get("Orientation"),
                           "Parameter '" + geom_path + "/Orientation'");
-        body.add_geom(geom, create_shape(prm.get("Type"), size3, geom), local);
+        if (prm.get("Type") == "mesh")
+        {
+          const std::string file = prm.get("Mesh file");
+          if (file.empty())
+            throw InputError("Geom '" + geom_path +
+                             "' has Type = mesh but no 'Mesh file'. Fix: "
+                             "name an STL or OBJ file.");
+          body.add_geom(
+              geom,
+              TriangleMeshShape::read(file, prm.get_double("Mesh scale")),
+              local);
+        }
+        else
+          body.add_geom(
+              geom, create_shape(prm.get("Type"), size3, geom), local);
         const std::string normal_text = prm.get("Reference normal");
         if (normal_text.empty())
           body_normals.emplace_back();
