@@ -1,6 +1,6 @@
 // Benchmark of mortar contact (not a test): the Hertz indentation of
 // tests/contact_factory.h (rigid sphere R = 10 mm, d = 0.1 mm, neo-Hookean
-// mu = 10 kPa, nu = 0.3, quarter model, frictionless) on a graded block.
+// mu = 10 kPa, nu = 0.45, quarter model, frictionless) on a graded block.
 //
 //   hertz_contact <n> <ratio> <size (m)> [degree] [steps] [direct|iterative]
 //                 [global refinements] [nu] [depth (m)]
@@ -29,7 +29,7 @@ main(int argc, char **argv)
   const unsigned int               steps  = argc > 5 ? std::stoi(argv[5]) : 4;
   const std::string                solver_type = argc > 6 ? argv[6] : "direct";
   const unsigned int refinements = argc > 7 ? std::stoi(argv[7]) : 0;
-  const double       nu          = argc > 8 ? std::stod(argv[8]) : 0.3;
+  const double       nu          = argc > 8 ? std::stod(argv[8]) : 0.45;
   const double       depth       = argc > 9 ? std::stod(argv[9]) : 1e-4;
 
   ParameterHandler prm;
@@ -55,7 +55,7 @@ main(int argc, char **argv)
   const auto   forces = solver.contact_output()->geom_forces(solver.system());
   const double force  = 4 * forces[0][0].force[2];
   const double radius = softgrasp_tests::edge_contact_radius(solver);
-  const double area_radius = std::sqrt(4 * forces[0][0].area / M_PI);
+  auto times = solver.timer().get_summary_data(TimerOutput::total_wall_time);
   if (Utilities::MPI::this_mpi_process(comm) == 0)
   {
     const auto &history = solver.history();
@@ -74,9 +74,7 @@ main(int argc, char **argv)
               << 100 * (force / exact.force - 1) << " %"
               << "\n  contact radius (gap edge) " << radius * 1e3
               << " mm, error " << 100 * (radius / exact.radius - 1) << " %"
-              << "\n  contact radius (closed area) " << area_radius * 1e3
-              << " mm, error " << 100 * (area_radius / exact.radius - 1)
-              << " %\n  Newton iterations per step " << newton / n_steps
+              << "\n  Newton iterations per step " << newton / n_steps
               << ", active-set changes per step " << changes / n_steps
               << std::endl;
   }

@@ -74,7 +74,7 @@ namespace softgrasp_tests
 {
   /**
    * Hertz indentation, quarter model: a rigid sphere (R = 10 mm) pressed
-   * d = 0.1 mm into a neo-Hookean block (mu = 10 kPa, nu = 0.3) of
+   * d = 0.1 mm into a neo-Hookean block (mu = 10 kPa, nu = 0.45) of
    * @p size (m) per side (the contact radius is 1 mm), symmetry planes x = 0
    * and y = 0, a roller at the bottom, frictionless. The block mesh is graded
    * towards the contact with @p n elements per direction and neighbour size
@@ -89,7 +89,7 @@ namespace softgrasp_tests
                                const std::string &directory,
                                const std::string &linear_solver = "direct",
                                const unsigned int refinements   = 0,
-                               const double       nu            = 0.3,
+                               const double       nu            = 0.45,
                                const double       depth         = 1e-4)
   {
     std::ostringstream s, sub, grading;
@@ -131,7 +131,7 @@ namespace softgrasp_tests
     double force;  ///< (4/3) E* sqrt(R) d^3/2 (N)
     double radius; ///< sqrt(R d) (m)
   };
-  inline HertzSolution hertz_solution(const double nu = 0.3,
+  inline HertzSolution hertz_solution(const double nu = 0.45,
                                       const double d  = 1e-4)
   {
     const double mu = 10e3, R = 0.01;
