@@ -77,5 +77,14 @@ main(int argc, char **argv)
               << "\n  Newton iterations per step " << newton / n_steps
               << ", active-set changes per step " << changes / n_steps
               << std::endl;
+    const double steps_time = times["contact"] + times["assembly"] +
+                              times["residual"] + times["linear solve"];
+    std::cout << "  wall time: contact search and nodal conditions "
+              << times["contact"] << " s ("
+              << 100 * times["contact"] / steps_time
+              << " % of the load steps), assembly " << times["assembly"]
+              << " s, residual " << times["residual"] << " s, linear solve "
+              << times["linear solve"] << " s, setup " << times["setup"] << " s"
+              << std::endl;
   }
 }

@@ -10,3 +10,7 @@ echo "wrote doc/parameters/tissue_curves.prm"
 "$root/build/examples/cook_membrane/cook_membrane" --print-parameters \
   > "$root/doc/parameters/quasi_static_solver.prm"
 echo "wrote doc/parameters/quasi_static_solver.prm"
+"$root/build/examples/hertz_indentation/hertz_indentation" --print-parameters \
+  "$root/examples/hertz_indentation/hertz_indentation.prm" \
+  > "$root/doc/parameters/contact_hertz_indentation.prm"
+echo "wrote doc/parameters/contact_hertz_indentation.prm (all entries of a run with rigid bodies and contact)"

@@ -56,6 +56,7 @@ namespace softgrasp
     const MPI_Comm comm = MPI_COMM_WORLD;
     const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
     bool           print_parameters = false;
+    bool           file_given       = false;
     std::string    filename         = default_parameter_file;
     for (int i = 1; i < argc; ++i)
     {
@@ -67,20 +68,39 @@ namespace softgrasp
         if (root)
           std::cout << "Usage: " << argv[0]
                     << " [--print-parameters] [file.prm]\n"
+                       "--print-parameters prints every parameter with its "
+                       "documentation (with a file: including the file's "
+                       "subsections and values).\n"
                        "Default parameter file: "
                     << default_parameter_file << std::endl;
         return 0;
       }
       else
-        filename = arg;
+      {
+        filename   = arg;
+        file_given = true;
+      }
     }
     try
     {
       if (print_parameters)
       {
+        // With a file: every entry, including the subsections the file
+        // creates (per material id, boundary id, rigid body and geom), with
+        // the file's values. Without: the entries every run has.
         ParameterHandler prm;
-        declare_dimension(prm);
-        QuasiStaticSolver<2>::declare_parameters(prm);
+        if (file_given)
+        {
+          if (read_dimension(filename) == 2)
+            read_parameters<2>(prm, filename);
+          else
+            read_parameters<3>(prm, filename);
+        }
+        else
+        {
+          declare_dimension(prm);
+          QuasiStaticSolver<2>::declare_parameters(prm);
+        }
         if (root)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return 0;
