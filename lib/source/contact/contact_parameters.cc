@@ -21,13 +21,16 @@ namespace softgrasp
                       "bodies and the tissue. Unit: 1. Range: [0, inf); 0 is "
                       "frictionless.");
     prm.declare_entry("Complementarity parameter",
-                      "1",
+                      "0.1",
                       Patterns::Double(1e-12),
                       "Scale of the complementarity parameter c = factor * 2 "
                       "mu_0 h (N/m) of the semi-smooth Newton method. It "
                       "only changes how the active set is predicted during "
-                      "the iterations, not the converged result. Unit: 1. "
-                      "Range: (0, inf).");
+                      "the iterations, not the converged result. Large "
+                      "values (>= 1) let the second-order gap error of "
+                      "curved rigid surfaces flip nodes between open and "
+                      "closed; small values decide by the contact force. "
+                      "Unit: 1. Range: (0, inf).");
     prm.leave_subsection();
   }
 

@@ -17,7 +17,7 @@ namespace softgrasp
     /// Complementarity parameter c as a multiple of 2 mu_0 h (N/m; mu_0
     /// the largest initial shear modulus, h the node's surface spacing).
     /// It steers only the active-set prediction, not the converged answer.
-    double complementarity_factor = 1; ///< (1)
+    double complementarity_factor = 0.1; ///< (1)
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
