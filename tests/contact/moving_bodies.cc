@@ -6,7 +6,8 @@
 // approaches. From t = 0.5 s on the two geometries coincide, and so must
 // every contact result: the force and moment histories agree to 1e-9. A
 // third run with a 10 times larger complementarity parameter gives the
-// same forces (to 1e-8): c is not a penalty.
+// same forces (to 1e-8): c is not a penalty. A fourth run takes the
+// reference normal of the force split from outside (set in code).
 #include "../contact_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
@@ -75,6 +76,35 @@ main(int argc, char **argv)
                   << (c_difference < 1e-8 * c_scale) << std::endl;
   SG_CHECK(c_difference < 1e-8 * c_scale,
            "the converged contact does not depend on c");
+
+  // A reference normal given from outside (as MuJoCo's contact normal
+  // would be), set in code: the split uses it instead of the patch normal.
+  auto given = make_solver<3>(problem(q, "1, 0, 0, 0"));
+  given->rigid_bodies().set_reference_normal(0, 0, Eigen::Vector3d(0, 0, 2));
+  given->run();
+  {
+    const auto       &g     = given->contact_history();
+    const std::size_t last  = g.rows.size() - 1;
+    const std::string p     = "finger/link:";
+    const double      F[3]  = {g.value(last, p + "F_x"),
+                               g.value(last, p + "F_y"),
+                               g.value(last, p + "F_z")};
+    const double      scale = std::abs(F[2]);
+    SG_CHECK(g.value(last, p + "n_z") == 1 && g.value(last, p + "n_x") == 0,
+             "the given normal, normalised");
+    SG_CHECK(std::abs(g.value(last, p + "F_n_z") - F[2]) < 1e-12 * scale &&
+                 std::abs(g.value(last, p + "F_n_x")) < 1e-12 * scale,
+             "(n n^T) F with the given n");
+    SG_CHECK(std::abs(g.value(last, p + "F_mu_x") - F[0]) < 1e-12 * scale &&
+                 std::abs(g.value(last, p + "F_mu_z")) < 1e-12 * scale,
+             "(I - n n^T) F with the given n");
+    SG_CHECK(std::abs(g.value(last, p + "normal_force") + F[2]) < 1e-12 * scale,
+             "normal force = -n . F");
+    const double patch_nx = placed->contact_history().value(last, p + "n_x");
+    dealii::deallog << "given normal (0, 0, 1) used for the split (the patch "
+                    << "normal would tilt by n_x = " << patch_nx << ")"
+                    << std::endl;
+  }
 
   const auto &a = placed->contact_history();
   const auto &b = turned->contact_history();
