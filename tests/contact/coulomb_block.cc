@@ -15,6 +15,9 @@
 #include "../solver_factory.h"
 #include "../tests.h"
 
+#include <deal.II/base/hdf5.h>
+#include <deal.II/lac/full_matrix.h>
+
 using namespace softgrasp_tests;
 
 int
@@ -95,4 +98,27 @@ main(int argc, char **argv)
   SG_CHECK(worst_stick <= 1e-8, "sticking nodes: |f_t| <= mu f_n");
   SG_CHECK(stick_motion < 1e-12, "sticking nodes do not slip");
   dealii::deallog << "node-wise Coulomb law holds" << std::endl;
+
+  // The same history as HDF5: group per geom, (steps x 3) force datasets.
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  {
+    dealii::HDF5::File file("output-coulomb/solution_contact.h5",
+                            dealii::HDF5::File::FileAccessMode::open);
+    SG_CHECK(file.get_attribute<std::string>("schema") ==
+                 "softgrasp contact history 1",
+             "schema attribute");
+    auto force = file.open_group("floor").open_group("plane").open_dataset("F");
+    auto values            = force.read<dealii::FullMatrix<double>>();
+    const std::size_t last = h.rows.size() - 1;
+    SG_CHECK(values.m() == h.rows.size() && values.n() == 3,
+             "one row per step, three components");
+    SG_CHECK(values(last, 0) == h.value(last, p + "F_x") &&
+                 values(last, 2) == h.value(last, p + "F_z"),
+             "HDF5 and CSV agree");
+    SG_CHECK(force.get_attribute<std::string>("unit") == "N", "unit");
+    auto time = file.open_dataset("time").read<std::vector<double>>();
+    SG_CHECK(time.size() == h.rows.size() && time.back() == 2, "time");
+    dealii::deallog << "HDF5 history: floor/plane/F is " << values.m() << " x "
+                    << values.n() << " (N), equal to the CSV" << std::endl;
+  }
 }

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/io/hdf5_history.h>
 #include <softgrasp/mechanics/quasi_static_solver.h>
 #include <sstream>
 
@@ -356,7 +357,15 @@ namespace softgrasp
     {
       history_writer.write();
       if (mortar_contact)
+      {
         contact_writer.write();
+        write_history_hdf5(contact_writer,
+                           solver_parameters.output.directory + "/" +
+                               solver_parameters.output.base_name +
+                               "_contact.h5",
+                           "softgrasp contact history 1",
+                           dim);
+      }
     }
   }
 
