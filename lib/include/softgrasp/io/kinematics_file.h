@@ -1,0 +1,79 @@
+#ifndef softgrasp_io_kinematics_file_h
+#define softgrasp_io_kinematics_file_h
+
+#include <limits>
+#include <softgrasp/rigid/rigid_body_set.h>
+#include <string>
+#include <vector>
+
+namespace softgrasp
+{
+  /**
+   * The kinematics a rigid-body simulator (MuJoCo) hands to the finite
+   * element solver: every body's world pose over time, the geoms of each
+   * body, the joint angles and targets, and the contact forces at the
+   * equilibrium grasp. The HDF5 layout (schema version 1) is documented in
+   * doc/kinematics_file.md. SI units: s, m, rad, N.
+   */
+  struct KinematicsData
+  {
+    static constexpr int schema_version = 1;
+
+    struct Geom
+    {
+      std::string     name;
+      std::string     type;                           ///< MuJoCo geom type
+      Eigen::Vector3d size = Eigen::Vector3d::Zero(); ///< MuJoCo size (m)
+      Pose            local_pose;                     ///< in the body frame
+    };
+    struct Body
+    {
+      std::string       name;
+      std::vector<Pose> poses; ///< world pose per time sample
+      std::vector<Geom> geoms;
+    };
+    struct Joint
+    {
+      std::string         name;
+      std::vector<double> angle;  ///< rad (or m for slide joints)
+      std::vector<double> target; ///< commanded actuator target
+    };
+    /// Contact force on a geom (a finger link) at the equilibrium state.
+    struct LinkForce
+    {
+      std::string     body, geom;
+      Eigen::Vector3d force  = Eigen::Vector3d::Zero(); ///< world (N)
+      Eigen::Vector3d normal = Eigen::Vector3d::Zero(); ///< world (1)
+    };
+
+    std::string         source; ///< what produced the file
+    std::vector<double> time;   ///< s, strictly increasing
+    std::vector<Body>   bodies;
+    std::vector<Joint>  joints;
+    double equilibrium_time = std::numeric_limits<double>::quiet_NaN(); ///< s
+    std::vector<LinkForce> equilibrium_forces;
+  };
+
+  /// Write @p data to @p filename (HDF5, schema version 1), atomically.
+  void write_kinematics_file(const KinematicsData &data,
+                             const std::string    &filename);
+
+  /**
+   * Read and validate a kinematics file. A missing file, a file that is not
+   * HDF5, a wrong schema version, a missing dataset or attribute, a dataset
+   * of the wrong shape, NaN, or non-increasing time is an InputError naming
+   * the file, the dataset and the fix.
+   */
+  KinematicsData read_kinematics_file(const std::string &filename);
+
+  /**
+   * The rigid bodies of @p data for the contact solver: every body with
+   * exactly its geoms (capsules stay analytic capsules) moving on its
+   * recorded poses; the equilibrium contact normals become the geoms'
+   * reference normals for the normal/lateral force split. Bodies without
+   * geoms are left out.
+   */
+  RigidBodySet rigid_bodies_from(const KinematicsData &data);
+} // namespace softgrasp
+
+#endif

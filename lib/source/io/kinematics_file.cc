@@ -1,0 +1,478 @@
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <fstream>
+#include <hdf5.h>
+#include <softgrasp/base/atomic_file.h>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/io/kinematics_file.h>
+
+namespace softgrasp
+{
+  namespace
+  {
+    const char *schema_name = "softgrasp kinematics";
+
+    /// Closes an HDF5 handle when it goes out of scope.
+    struct Handle
+    {
+      hid_t id;
+      herr_t (*close)(hid_t);
+      Handle(hid_t id, herr_t (*close)(hid_t))
+          : id(id)
+          , close(close)
+      {
+      }
+      ~Handle()
+      {
+        if (id >= 0)
+          close(id);
+      }
+      operator hid_t() const
+      {
+        return id;
+      }
+    };
+
+    std::string join(const std::vector<std::string> &names)
+    {
+      std::string list;
+      for (const auto &n : names)
+      {
+        if (n.empty() || n.find_first_of(",/") != std::string::npos)
+          throw InputError("The name '" + n +
+                           "' cannot be stored in a kinematics file. Fix: "
+                           "use non-empty names without ',' or '/'.");
+        list += (list.empty() ? "" : ",") + n;
+      }
+      return list;
+    }
+
+    // ---- writing
+    void write_string_attribute(hid_t              object,
+                                const std::string &name,
+                                const std::string &value)
+    {
+      Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+      H5Tset_size(type, value.size() + 1);
+      Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+      Handle attribute(
+          H5Acreate2(
+              object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT),
+          H5Aclose);
+      H5Awrite(attribute, type, value.c_str());
+    }
+
+    template <typename T>
+    void write_number_attribute(hid_t              object,
+                                const std::string &name,
+                                const T            value,
+                                hid_t              type)
+    {
+      Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+      Handle attribute(
+          H5Acreate2(
+              object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT),
+          H5Aclose);
+      H5Awrite(attribute, type, &value);
+    }
+
+    void write_dataset(hid_t                      location,
+                       const std::string         &name,
+                       const std::vector<double> &values,
+                       const hsize_t              rows,
+                       const hsize_t              columns)
+    {
+      const hsize_t dims[2] = {rows, columns};
+      Handle        space(H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr),
+                   H5Sclose);
+      Handle        set(H5Dcreate2(location,
+                            name.c_str(),
+                            H5T_NATIVE_DOUBLE,
+                            space,
+                            H5P_DEFAULT,
+                            H5P_DEFAULT,
+                            H5P_DEFAULT),
+                 H5Dclose);
+      if (rows * columns > 0)
+        H5Dwrite(set,
+                 H5T_NATIVE_DOUBLE,
+                 H5S_ALL,
+                 H5S_ALL,
+                 H5P_DEFAULT,
+                 values.data());
+    }
+
+    void write_poses(hid_t location, const std::vector<Pose> &poses)
+    {
+      std::vector<double> p, q;
+      for (const auto &pose : poses)
+      {
+        p.insert(p.end(),
+                 {pose.position[0], pose.position[1], pose.position[2]});
+        q.insert(q.end(),
+                 {pose.orientation.w(),
+                  pose.orientation.x(),
+                  pose.orientation.y(),
+                  pose.orientation.z()});
+      }
+      write_dataset(location, "position", p, poses.size(), 3);
+      write_dataset(location, "quaternion", q, poses.size(), 4);
+    }
+
+    Handle create_group(hid_t location, const std::string &name)
+    {
+      return Handle(
+          H5Gcreate2(
+              location, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+          H5Gclose);
+    }
+
+    // ---- reading
+    class Reader
+    {
+    public:
+      explicit Reader(const std::string &filename)
+          : filename(filename)
+      {
+      }
+
+      [[noreturn]] void fail(const std::string &what,
+                             const std::string &fix) const
+      {
+        throw InputError("The kinematics file '" + filename + "' " + what +
+                         ". Fix: " + fix + ".");
+      }
+
+      Handle open_group(hid_t location, const std::string &path) const
+      {
+        if (H5Lexists(location, path.c_str(), H5P_DEFAULT) <= 0)
+          fail("has no group '" + path + "'",
+               "write it as described in doc/kinematics_file.md");
+        return Handle(H5Gopen2(location, path.c_str(), H5P_DEFAULT), H5Gclose);
+      }
+
+      std::string string_attribute(hid_t              object,
+                                   const std::string &name,
+                                   const std::string &where) const
+      {
+        if (H5Aexists(object, name.c_str()) <= 0)
+          fail("has no attribute '" + name + "' on '" + where + "'",
+               "write it as described in doc/kinematics_file.md");
+        Handle attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
+        Handle type(H5Aget_type(attribute), H5Tclose);
+        const size_t size = H5Tget_size(type);
+        if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) > 0)
+          fail("has a non-string attribute '" + name + "' on '" + where + "'",
+               "store it as a fixed-length string");
+        std::string value(size, '\0');
+        H5Aread(attribute, type, value.data());
+        return value.substr(0, value.find('\0'));
+      }
+
+      double number_attribute(hid_t              object,
+                              const std::string &name,
+                              const std::string &where) const
+      {
+        if (H5Aexists(object, name.c_str()) <= 0)
+          fail("has no attribute '" + name + "' on '" + where + "'",
+               "write it as described in doc/kinematics_file.md");
+        Handle attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
+        double value = 0;
+        H5Aread(attribute, H5T_NATIVE_DOUBLE, &value);
+        return value;
+      }
+
+      /// A dataset of @p rows x @p columns (rows = 0: any), all finite.
+      std::vector<double> dataset(hid_t              location,
+                                  const std::string &name,
+                                  const std::string &path,
+                                  const hsize_t      rows,
+                                  const hsize_t      columns) const
+      {
+        if (H5Lexists(location, name.c_str(), H5P_DEFAULT) <= 0)
+          fail("has no dataset '" + path + "'",
+               "write it as described in doc/kinematics_file.md");
+        Handle    set(H5Dopen2(location, name.c_str(), H5P_DEFAULT), H5Dclose);
+        Handle    space(H5Dget_space(set), H5Sclose);
+        hsize_t   dims[2] = {0, 1};
+        const int rank    = H5Sget_simple_extent_ndims(space);
+        H5Sget_simple_extent_dims(space, dims, nullptr);
+        if (rank < 1 || rank > 2 || (rank == 1 && columns != 1) ||
+            (rank == 2 && dims[1] != columns) || (rows > 0 && dims[0] != rows))
+          fail("has the dataset '" + path + "' with shape " +
+                   std::to_string(dims[0]) +
+                   (rank == 2 ? " x " + std::to_string(dims[1]) : "") +
+                   ", expected " + (rows > 0 ? std::to_string(rows) : "n") +
+                   (columns > 1 ? " x " + std::to_string(columns) : ""),
+               "write one row per time sample (doc/kinematics_file.md)");
+        std::vector<double> values(dims[0] * columns);
+        if (!values.empty())
+          H5Dread(set,
+                  H5T_NATIVE_DOUBLE,
+                  H5S_ALL,
+                  H5S_ALL,
+                  H5P_DEFAULT,
+                  values.data());
+        for (std::size_t i = 0; i < values.size(); ++i)
+          if (!std::isfinite(values[i]))
+            fail("has a non-finite value (NaN or inf) in '" + path +
+                     "' at row " + std::to_string(i / columns),
+                 "check the simulation that wrote it");
+        return values;
+      }
+
+      std::vector<Pose>
+      poses(hid_t location, const std::string &path, const hsize_t n) const
+      {
+        const auto p = dataset(location, "position", path + "/position", n, 3);
+        const auto q =
+            dataset(location, "quaternion", path + "/quaternion", n, 4);
+        std::vector<Pose> result(n);
+        for (hsize_t i = 0; i < n; ++i)
+        {
+          result[i].position = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+          const Eigen::Quaterniond quaternion(
+              q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
+          if (quaternion.norm() < 1e-12)
+            fail("has a zero quaternion in '" + path + "/quaternion' at row " +
+                     std::to_string(i),
+                 "write unit quaternions w, x, y, z");
+          result[i].orientation = quaternion.normalized();
+        }
+        return result;
+      }
+
+      std::string filename;
+    };
+
+    std::vector<std::string> names_of(const std::string &list)
+    {
+      return dealii::Utilities::split_string_list(list, ',');
+    }
+  } // namespace
+
+  void write_kinematics_file(const KinematicsData &data,
+                             const std::string    &filename)
+  {
+    const std::string temporary = AtomicFile::temporary_name(filename);
+    {
+      Handle file(
+          H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+          H5Fclose);
+      if (file < 0)
+        throw InputError("Cannot create the kinematics file '" + filename +
+                         "'. Fix: check that its directory exists and is "
+                         "writable.");
+      write_string_attribute(file, "schema", schema_name);
+      write_number_attribute<int>(file,
+                                  "schema_version",
+                                  KinematicsData::schema_version,
+                                  H5T_NATIVE_INT);
+      write_string_attribute(file, "source", data.source);
+      write_dataset(file, "time", data.time, data.time.size(), 1);
+
+      std::vector<std::string> body_names;
+      for (const auto &b : data.bodies)
+        body_names.push_back(b.name);
+      Handle bodies = create_group(file, "bodies");
+      write_string_attribute(bodies, "names", join(body_names));
+      for (const auto &b : data.bodies)
+      {
+        Handle group = create_group(bodies, b.name);
+        write_poses(group, b.poses);
+        std::vector<std::string> geom_names;
+        for (const auto &g : b.geoms)
+          geom_names.push_back(g.name);
+        Handle geoms = create_group(group, "geoms");
+        write_string_attribute(geoms, "names", join(geom_names));
+        for (const auto &g : b.geoms)
+        {
+          Handle geom = create_group(geoms, g.name);
+          write_string_attribute(geom, "type", g.type);
+          write_dataset(geom, "size", {g.size[0], g.size[1], g.size[2]}, 3, 1);
+          write_poses(geom, {g.local_pose});
+        }
+      }
+
+      std::vector<std::string> joint_names;
+      for (const auto &j : data.joints)
+        joint_names.push_back(j.name);
+      Handle joints = create_group(file, "joints");
+      write_string_attribute(joints, "names", join(joint_names));
+      for (const auto &j : data.joints)
+      {
+        Handle group = create_group(joints, j.name);
+        write_dataset(group, "angle", j.angle, j.angle.size(), 1);
+        write_dataset(group, "target", j.target, j.target.size(), 1);
+      }
+
+      Handle equilibrium = create_group(file, "equilibrium");
+      write_number_attribute<double>(
+          equilibrium, "time", data.equilibrium_time, H5T_NATIVE_DOUBLE);
+      std::vector<std::string> links;
+      for (const auto &f : data.equilibrium_forces)
+      {
+        join({f.body, f.geom});
+        links.push_back(f.body + "/" + f.geom);
+      }
+      std::string list;
+      for (const auto &l : links)
+        list += (list.empty() ? "" : ",") + l;
+      write_string_attribute(equilibrium, "links", list);
+      for (const auto &f : data.equilibrium_forces)
+      {
+        if (H5Lexists(equilibrium, f.body.c_str(), H5P_DEFAULT) <= 0)
+          create_group(equilibrium, f.body);
+        Handle body(H5Gopen2(equilibrium, f.body.c_str(), H5P_DEFAULT),
+                    H5Gclose);
+        Handle link = create_group(body, f.geom);
+        write_dataset(
+            link, "force", {f.force[0], f.force[1], f.force[2]}, 3, 1);
+        write_dataset(
+            link, "normal", {f.normal[0], f.normal[1], f.normal[2]}, 3, 1);
+      }
+    }
+    AtomicFile::commit(temporary, filename);
+  }
+
+  KinematicsData read_kinematics_file(const std::string &filename)
+  {
+    if (!std::ifstream(filename))
+      throw InputError("Cannot open the kinematics file '" + filename +
+                       "'. Fix: check the path (relative to the working "
+                       "directory), or run the rigid-body program that "
+                       "writes it.");
+    // HDF5 would print its own error stack; the messages below say more.
+    H5E_auto2_t old_function;
+    void       *old_data;
+    H5Eget_auto2(H5E_DEFAULT, &old_function, &old_data);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    struct Restore
+    {
+      H5E_auto2_t f;
+      void       *d;
+      ~Restore()
+      {
+        H5Eset_auto2(H5E_DEFAULT, f, d);
+      }
+    } restore{old_function, old_data};
+
+    const Reader reader(filename);
+    if (H5Fis_hdf5(filename.c_str()) <= 0)
+      reader.fail("is not an HDF5 file",
+                  "give the .h5 file written by the rigid-body program");
+    Handle file(H5Fopen(filename.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT),
+                H5Fclose);
+    if (reader.string_attribute(file, "schema", "/") != schema_name)
+      reader.fail("is not a softgrasp kinematics file (attribute 'schema')",
+                  "give the file written by the rigid-body program");
+    const int version =
+        static_cast<int>(reader.number_attribute(file, "schema_version", "/"));
+    if (version != KinematicsData::schema_version)
+      reader.fail("has schema version " + std::to_string(version) +
+                      ", this softgrasp reads version " +
+                      std::to_string(KinematicsData::schema_version),
+                  "write the file again with the matching softgrasp");
+
+    KinematicsData data;
+    data.source     = reader.string_attribute(file, "source", "/");
+    data.time       = reader.dataset(file, "time", "/time", 0, 1);
+    const hsize_t n = data.time.size();
+    if (n == 0)
+      reader.fail("has an empty '/time'", "record at least one sample");
+    for (hsize_t i = 1; i < n; ++i)
+      if (!(data.time[i] > data.time[i - 1]))
+        reader.fail("has non-increasing times in '/time' at row " +
+                        std::to_string(i),
+                    "record samples at strictly increasing times");
+
+    Handle bodies = reader.open_group(file, "bodies");
+    for (const auto &name :
+         names_of(reader.string_attribute(bodies, "names", "/bodies")))
+    {
+      const std::string    path  = "/bodies/" + name;
+      Handle               group = reader.open_group(bodies, name);
+      KinematicsData::Body body;
+      body.name    = name;
+      body.poses   = reader.poses(group, path, n);
+      Handle geoms = reader.open_group(group, "geoms");
+      for (const auto &geom_name :
+           names_of(reader.string_attribute(geoms, "names", path + "/geoms")))
+      {
+        const std::string    geom_path = path + "/geoms/" + geom_name;
+        Handle               geom      = reader.open_group(geoms, geom_name);
+        KinematicsData::Geom g;
+        g.name = geom_name;
+        g.type = reader.string_attribute(geom, "type", geom_path);
+        const auto size =
+            reader.dataset(geom, "size", geom_path + "/size", 3, 1);
+        g.size       = {size[0], size[1], size[2]};
+        g.local_pose = reader.poses(geom, geom_path, 1)[0];
+        body.geoms.push_back(g);
+      }
+      data.bodies.push_back(body);
+    }
+
+    Handle joints = reader.open_group(file, "joints");
+    for (const auto &name :
+         names_of(reader.string_attribute(joints, "names", "/joints")))
+    {
+      const std::string     path  = "/joints/" + name;
+      Handle                group = reader.open_group(joints, name);
+      KinematicsData::Joint joint;
+      joint.name   = name;
+      joint.angle  = reader.dataset(group, "angle", path + "/angle", n, 1);
+      joint.target = reader.dataset(group, "target", path + "/target", n, 1);
+      data.joints.push_back(joint);
+    }
+
+    Handle equilibrium = reader.open_group(file, "equilibrium");
+    data.equilibrium_time =
+        reader.number_attribute(equilibrium, "time", "/equilibrium");
+    for (const auto &link : names_of(
+             reader.string_attribute(equilibrium, "links", "/equilibrium")))
+    {
+      const auto slash = link.find('/');
+      if (slash == std::string::npos)
+        reader.fail("lists the link '" + link + "' in '/equilibrium'",
+                    "name links as body/geom");
+      const std::string         path  = "/equilibrium/" + link;
+      Handle                    group = reader.open_group(equilibrium, link);
+      KinematicsData::LinkForce f;
+      f.body           = link.substr(0, slash);
+      f.geom           = link.substr(slash + 1);
+      const auto force = reader.dataset(group, "force", path + "/force", 3, 1);
+      const auto normal =
+          reader.dataset(group, "normal", path + "/normal", 3, 1);
+      f.force  = {force[0], force[1], force[2]};
+      f.normal = {normal[0], normal[1], normal[2]};
+      data.equilibrium_forces.push_back(f);
+    }
+    return data;
+  }
+
+  RigidBodySet rigid_bodies_from(const KinematicsData &data)
+  {
+    RigidBodySet set;
+    for (const auto &b : data.bodies)
+    {
+      if (b.geoms.empty())
+        continue;
+      RigidBody body(b.name,
+                     PoseTrajectory(data.time,
+                                    b.poses,
+                                    "kinematics body '" + b.name + "'"));
+      for (const auto &g : b.geoms)
+        body.add_geom(g.name,
+                      create_shape(g.type, g.size, b.name + "/" + g.name),
+                      g.local_pose);
+      const unsigned int index = set.add_body(body);
+      for (const auto &f : data.equilibrium_forces)
+        if (f.body == b.name)
+          for (unsigned int g = 0; g < b.geoms.size(); ++g)
+            if (b.geoms[g].name == f.geom && f.normal.norm() > 0)
+              set.set_reference_normal(index, g, f.normal);
+    }
+    return set;
+  }
+} // namespace softgrasp

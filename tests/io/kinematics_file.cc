@@ -1,0 +1,189 @@
+// The kinematics file between the rigid-body simulator and the finite
+// element solver (HDF5, schema version 1, doc/kinematics_file.md):
+//  - a write/read round trip returns every number exactly;
+//  - the rigid bodies built from it place each geom at the recorded pose at
+//    the sample times (capsules stay analytic capsules), and the
+//    equilibrium contact normals become the reference normals;
+//  - a missing file, a file that is not HDF5, a wrong schema version, a
+//    missing dataset, NaN, a wrong shape and non-increasing time give
+//    errors that name the dataset and the fix.
+#include "../tests.h"
+
+#include <hdf5.h>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/io/kinematics_file.h>
+
+using namespace softgrasp;
+
+namespace
+{
+  KinematicsData example()
+  {
+    KinematicsData data;
+    data.source = "test";
+    data.time   = {0, 0.5, 1.25};
+    for (const std::string name : {"thumb_proximal", "finger_distal"})
+    {
+      KinematicsData::Body body;
+      body.name = name;
+      for (unsigned int i = 0; i < data.time.size(); ++i)
+      {
+        Pose pose;
+        pose.position    = Eigen::Vector3d(0.01 * i, -0.02, 0.1 + 0.003 * i);
+        pose.orientation = Eigen::Quaterniond(
+            Eigen::AngleAxisd(0.3 * i, Eigen::Vector3d(0, 1, 1).normalized()));
+        body.poses.push_back(pose);
+      }
+      KinematicsData::Geom geom;
+      geom.name                   = name + "_capsule";
+      geom.type                   = "capsule";
+      geom.size                   = Eigen::Vector3d(0.008, 0.02, 0);
+      geom.local_pose.position    = Eigen::Vector3d(0, 0, 0.02);
+      geom.local_pose.orientation = Eigen::Quaterniond(
+          Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
+      body.geoms.push_back(geom);
+      data.bodies.push_back(body);
+    }
+    KinematicsData::Body world; // a body without geoms (left out of contact)
+    world.name  = "hand_base";
+    world.poses = data.bodies[0].poses;
+    data.bodies.push_back(world);
+    data.joints.push_back({"thumb_hinge", {0, 0.1, 0.2}, {0.05, 0.15, 0.3}});
+    data.equilibrium_time = 0.5;
+    data.equilibrium_forces.push_back({"thumb_proximal",
+                                       "thumb_proximal_capsule",
+                                       {1.5, -2, 10},
+                                       {0, 0.6, 0.8}});
+    return data;
+  }
+
+  std::string error_of(const std::string &file)
+  {
+    try
+    {
+      read_kinematics_file(file);
+    }
+    catch (const InputError &e)
+    {
+      return e.what();
+    }
+    return "no error";
+  }
+
+  /// Overwrite (or delete, if @p values is empty) a dataset of a file.
+  void tamper(const std::string         &file,
+              const std::string         &path,
+              const std::vector<double> &values)
+  {
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    if (values.empty())
+      H5Ldelete(f, path.c_str(), H5P_DEFAULT);
+    else
+    {
+      const hid_t d = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
+      H5Dwrite(
+          d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+      H5Dclose(d);
+    }
+    H5Fclose(f);
+  }
+} // namespace
+
+int
+main()
+{
+  softgrasp_tests::initlog();
+  const KinematicsData written = example();
+  write_kinematics_file(written, "kinematics.h5");
+  const KinematicsData read = read_kinematics_file("kinematics.h5");
+
+  bool same =
+      read.time == written.time && read.source == written.source &&
+      read.bodies.size() == written.bodies.size() &&
+      read.equilibrium_time == written.equilibrium_time &&
+      read.joints[0].angle == written.joints[0].angle &&
+      read.joints[0].target == written.joints[0].target &&
+      read.equilibrium_forces[0].force == written.equilibrium_forces[0].force;
+  for (unsigned int b = 0; b < written.bodies.size(); ++b)
+  {
+    same = same && read.bodies[b].name == written.bodies[b].name &&
+           read.bodies[b].geoms.size() == written.bodies[b].geoms.size();
+    for (unsigned int i = 0; i < written.time.size(); ++i)
+      same = same &&
+             read.bodies[b].poses[i].position ==
+                 written.bodies[b].poses[i].position &&
+             (read.bodies[b].poses[i].orientation.coeffs() -
+              written.bodies[b].poses[i].orientation.coeffs())
+                     .norm() < 1e-15; // re-normalised on reading
+  }
+  dealii::deallog << "round trip exact (quaternions to 1e-15): " << same
+                  << std::endl;
+  SG_CHECK(same, "write/read round trip");
+
+  const RigidBodySet set = rigid_bodies_from(read);
+  SG_CHECK(set.bodies().size() == 2, "bodies without geoms are left out");
+  double worst = 0;
+  for (unsigned int b = 0; b < 2; ++b)
+    for (unsigned int i = 0; i < written.time.size(); ++i)
+    {
+      const Pose expected =
+          written.bodies[b].poses[i] * written.bodies[b].geoms[0].local_pose;
+      const Pose got = set.bodies()[b].geom_pose(0, written.time[i]);
+      worst          = std::max({worst,
+                                 (got.position - expected.position).norm(),
+                                 got.orientation.angularDistance(expected.orientation)});
+    }
+  SG_CHECK(worst < 1e-14, "geom poses at the sample times");
+  SG_CHECK(set.bodies()[0].geoms()[0].shape->type() == "capsule",
+           "capsules stay capsules");
+  SG_CHECK((*set.reference_normal(0, 0) - Eigen::Vector3d(0, 0.6, 0.8)).norm() <
+               1e-15,
+           "equilibrium normal as reference normal");
+  dealii::deallog << "geom poses at the sample times, capsule geoms and the "
+                  << "equilibrium normal: 1" << std::endl;
+
+  // Bad files.
+  std::ofstream("not_hdf5.h5") << "text\n";
+  const auto variant = [&](const std::string &name, auto change)
+  {
+    write_kinematics_file(written, name);
+    change(name);
+    return name;
+  };
+  const std::vector<std::string> bad = {
+      "missing.h5",
+      "not_hdf5.h5",
+      variant("version.h5",
+              [](const std::string &f)
+              {
+                const hid_t file =
+                    H5Fopen(f.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+                const hid_t a = H5Aopen(file, "schema_version", H5P_DEFAULT);
+                const int   v = 7;
+                H5Awrite(a, H5T_NATIVE_INT, &v);
+                H5Aclose(a);
+                H5Fclose(file);
+              }),
+      variant("no_dataset.h5",
+              [](const std::string &f)
+              { tamper(f, "/bodies/thumb_proximal/quaternion", {}); }),
+      variant("nan.h5",
+              [](const std::string &f)
+              {
+                std::vector<double> p(9, 0.0);
+                p[4] = std::nan("");
+                tamper(f, "/bodies/finger_distal/position", p);
+              }),
+      variant("time.h5",
+              [](const std::string &f) {
+                tamper(f, "/time", {0, 0.5, 0.5});
+              })};
+  for (const auto &file : bad)
+  {
+    const std::string message = error_of(file);
+    dealii::deallog << file << ": " << message << std::endl;
+    SG_CHECK(message.find(file) != std::string::npos &&
+                 message.find("Fix:") != std::string::npos,
+             "the error names the file and the fix");
+  }
+}
