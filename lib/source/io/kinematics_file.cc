@@ -47,6 +47,15 @@ namespace softgrasp
       return list;
     }
 
+    /// The comma-separated names of @p items (bodies, geoms, joints).
+    template <typename T> std::string names_list(const std::vector<T> &items)
+    {
+      std::vector<std::string> names;
+      for (const auto &item : items)
+        names.push_back(item.name);
+      return join(names);
+    }
+
     // ---- writing
     void write_string_attribute(hid_t              object,
                                 const std::string &name,
@@ -271,20 +280,14 @@ namespace softgrasp
       write_string_attribute(file, "source", data.source);
       write_dataset(file, "time", data.time, data.time.size(), 1);
 
-      std::vector<std::string> body_names;
-      for (const auto &b : data.bodies)
-        body_names.push_back(b.name);
       Handle bodies = create_group(file, "bodies");
-      write_string_attribute(bodies, "names", join(body_names));
+      write_string_attribute(bodies, "names", names_list(data.bodies));
       for (const auto &b : data.bodies)
       {
         Handle group = create_group(bodies, b.name);
         write_poses(group, b.poses);
-        std::vector<std::string> geom_names;
-        for (const auto &g : b.geoms)
-          geom_names.push_back(g.name);
         Handle geoms = create_group(group, "geoms");
-        write_string_attribute(geoms, "names", join(geom_names));
+        write_string_attribute(geoms, "names", names_list(b.geoms));
         for (const auto &g : b.geoms)
         {
           Handle geom = create_group(geoms, g.name);
@@ -294,11 +297,8 @@ namespace softgrasp
         }
       }
 
-      std::vector<std::string> joint_names;
-      for (const auto &j : data.joints)
-        joint_names.push_back(j.name);
       Handle joints = create_group(file, "joints");
-      write_string_attribute(joints, "names", join(joint_names));
+      write_string_attribute(joints, "names", names_list(data.joints));
       for (const auto &j : data.joints)
       {
         Handle group = create_group(joints, j.name);
@@ -309,16 +309,13 @@ namespace softgrasp
       Handle equilibrium = create_group(file, "equilibrium");
       write_number_attribute<double>(
           equilibrium, "time", data.equilibrium_time, H5T_NATIVE_DOUBLE);
-      std::vector<std::string> links;
+      std::string links;
       for (const auto &f : data.equilibrium_forces)
       {
-        join({f.body, f.geom});
-        links.push_back(f.body + "/" + f.geom);
+        join({f.body, f.geom}); // rejects names with ',' or '/'
+        links += (links.empty() ? "" : ",") + f.body + "/" + f.geom;
       }
-      std::string list;
-      for (const auto &l : links)
-        list += (list.empty() ? "" : ",") + l;
-      write_string_attribute(equilibrium, "links", list);
+      write_string_attribute(equilibrium, "links", links);
       for (const auto &f : data.equilibrium_forces)
       {
         if (H5Lexists(equilibrium, f.body.c_str(), H5P_DEFAULT) <= 0)

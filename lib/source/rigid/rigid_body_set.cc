@@ -65,6 +65,16 @@ namespace softgrasp
       return result.normalized();
     }
 
+    /// The pose x, y, z, qw, qx, qy, qz in seven numbers from @p v (the
+    /// trajectory validates and normalises the quaternion).
+    Pose pose_from(const double *v)
+    {
+      Pose pose;
+      pose.position    = {v[0], v[1], v[2]};
+      pose.orientation = Eigen::Quaterniond(v[3], v[4], v[5], v[6]);
+      return pose;
+    }
+
     void declare_geom(ParameterHandler &prm)
     {
       prm.declare_entry(
@@ -312,10 +322,7 @@ namespace softgrasp
                          "') needs one time and seven pose numbers. Fix: "
                          "write 't: x, y, z, qw, qx, qy, qz'.");
       times.push_back(t[0]);
-      Pose pose;
-      pose.position    = {v[0], v[1], v[2]};
-      pose.orientation = Eigen::Quaterniond(v[3], v[4], v[5], v[6]);
-      poses.push_back(pose);
+      poses.push_back(pose_from(v.data()));
     }
     if (times.empty())
       throw InputError(source + " has no samples. Fix: give at least one "
@@ -357,10 +364,7 @@ namespace softgrasp
                          std::to_string(v.size()) +
                          " numbers. Fix: give t,x,y,z,qw,qx,qy,qz.");
       times.push_back(v[0]);
-      Pose pose;
-      pose.position    = {v[1], v[2], v[3]};
-      pose.orientation = Eigen::Quaterniond(v[4], v[5], v[6], v[7]);
-      poses.push_back(pose);
+      poses.push_back(pose_from(v.data() + 1));
     }
     if (times.empty())
       throw InputError("The trajectory file '" + filename +
