@@ -1,5 +1,5 @@
 // The kinematics file between the rigid-body simulator and the finite
-// element solver (HDF5, schema version 1, doc/kinematics_file.md):
+// element solver (HDF5, schema version 2, doc/kinematics_file.md):
 //  - a write/read round trip returns every number exactly;
 //  - the rigid bodies built from it place each geom at the recorded pose at
 //    the sample times (capsules stay analytic capsules), and the
@@ -54,6 +54,17 @@ namespace
                                        "thumb_proximal_capsule",
                                        {1.5, -2, 10},
                                        {0, 0.6, 0.8}});
+    KinematicsData::LinkHistory history;
+    history.body = "thumb_proximal";
+    history.geom = "thumb_proximal_capsule";
+    for (unsigned int i = 0; i < data.time.size(); ++i)
+    {
+      history.force.emplace_back(0.5 * i, -1, 3 * i);
+      history.normal_force.emplace_back(0, -0.6 * i, 2.5 * i);
+    }
+    data.link_forces.push_back(history);
+    data.phases.push_back({"closing", 0, 0.5, 0});
+    data.phases.push_back({"indentation", 0.5, 1.25, 0.2});
     return data;
   }
 
@@ -103,7 +114,12 @@ main()
       read.equilibrium_time == written.equilibrium_time &&
       read.joints[0].angle == written.joints[0].angle &&
       read.joints[0].target == written.joints[0].target &&
-      read.equilibrium_forces[0].force == written.equilibrium_forces[0].force;
+      read.equilibrium_forces[0].force == written.equilibrium_forces[0].force &&
+      read.link_forces[0].force == written.link_forces[0].force &&
+      read.link_forces[0].normal_force == written.link_forces[0].normal_force &&
+      read.phases.size() == 2 && read.phases[1].name == "indentation" &&
+      read.phases[1].start_time == 0.5 && read.phases[1].end_time == 1.25 &&
+      read.phases[1].amount == 0.2;
   for (unsigned int b = 0; b < written.bodies.size(); ++b)
   {
     same = same && read.bodies[b].name == written.bodies[b].name &&
@@ -142,6 +158,27 @@ main()
   dealii::deallog << "geom poses at the sample times, capsule geoms and the "
                   << "equilibrium normal: 1" << std::endl;
 
+  // The indentation phase as a run of its own: time 0 at the equilibrium.
+  const auto &phase = read.phase("indentation");
+  const auto  cut   = read.slice(phase.start_time, phase.end_time);
+  SG_CHECK(cut.time == std::vector<double>({0, 0.75}) &&
+               cut.bodies[1].poses[1].position ==
+                   written.bodies[1].poses[2].position &&
+               cut.link_forces[0].force[0] == written.link_forces[0].force[1] &&
+               cut.phases.size() == 1 && cut.phases[0].start_time == 0 &&
+               cut.equilibrium_time == 0,
+           "slice of the indentation phase");
+  dealii::deallog << "indentation phase sliced to start at 0: 1" << std::endl;
+  try
+  {
+    read.phase("pull");
+    SG_CHECK(false, "unknown phase");
+  }
+  catch (const InputError &e)
+  {
+    dealii::deallog << e.what() << std::endl;
+  }
+
   // Bad files.
   std::ofstream("not_hdf5.h5") << "text\n";
   const auto variant = [&](const std::string &name, auto change)
@@ -177,6 +214,14 @@ main()
       variant("time.h5",
               [](const std::string &f) {
                 tamper(f, "/time", {0, 0.5, 0.5});
+              }),
+      variant("history.h5",
+              [](const std::string &f)
+              {
+                tamper(f,
+                       "/link_forces/thumb_proximal/thumb_proximal_capsule/"
+                       "normal_force",
+                       {});
               })};
   for (const auto &file : bad)
   {

@@ -47,6 +47,15 @@ namespace softgrasp
       return list;
     }
 
+    /// "a,b,c" of link names (already checked).
+    std::string join_links(const std::vector<std::string> &links)
+    {
+      std::string list;
+      for (const auto &l : links)
+        list += (list.empty() ? "" : ",") + l;
+      return list;
+    }
+
     /// The comma-separated names of @p items (bodies, geoms, joints).
     template <typename T> std::string names_list(const std::vector<T> &items)
     {
@@ -126,6 +135,16 @@ namespace softgrasp
       }
       write_dataset(location, "position", p, poses.size(), 3);
       write_dataset(location, "quaternion", q, poses.size(), 4);
+    }
+
+    void write_vectors(hid_t                               location,
+                       const std::string                  &name,
+                       const std::vector<Eigen::Vector3d> &vectors)
+    {
+      std::vector<double> values;
+      for (const auto &v : vectors)
+        values.insert(values.end(), {v[0], v[1], v[2]});
+      write_dataset(location, name, values, vectors.size(), 3);
     }
 
     Handle create_group(hid_t location, const std::string &name)
@@ -258,7 +277,93 @@ namespace softgrasp
     {
       return dealii::Utilities::split_string_list(list, ',');
     }
+
+    /// The group @p name in @p location, created if missing.
+    Handle group_in(hid_t location, const std::string &name)
+    {
+      if (H5Lexists(location, name.c_str(), H5P_DEFAULT) <= 0)
+        create_group(location, name);
+      return Handle(H5Gopen2(location, name.c_str(), H5P_DEFAULT), H5Gclose);
+    }
+
+    /// "body/geom" of a link, rejecting names with ',' or '/'.
+    std::string link_name(const std::string &body, const std::string &geom)
+    {
+      join({body, geom});
+      return body + "/" + geom;
+    }
+
+    std::vector<Eigen::Vector3d> vectors_of(const std::vector<double> &values)
+    {
+      std::vector<Eigen::Vector3d> result;
+      for (std::size_t i = 0; i + 2 < values.size(); i += 3)
+        result.emplace_back(values[i], values[i + 1], values[i + 2]);
+      return result;
+    }
   } // namespace
+
+  const KinematicsData::Phase &
+  KinematicsData::phase(const std::string &name) const
+  {
+    std::string names;
+    for (const auto &p : phases)
+    {
+      if (p.name == name)
+        return p;
+      names += (names.empty() ? "" : ", ") + p.name;
+    }
+    throw InputError("The kinematics (" + source + ") have no phase '" + name +
+                     "'; they have: " + (names.empty() ? "none" : names) +
+                     ". Fix: run the rigid-body program with that phase "
+                     "enabled, or choose one of these.");
+  }
+
+  KinematicsData KinematicsData::slice(const double start,
+                                       const double end) const
+  {
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < time.size(); ++i)
+      if (time[i] >= start - 1e-12 && time[i] <= end + 1e-12)
+        kept.push_back(i);
+    if (kept.size() < 2)
+      throw InputError("The kinematics (" + source + ") have fewer than two "
+                       "samples between " + std::to_string(start) + " s and " +
+                       std::to_string(end) + " s. Fix: record the phase with "
+                       "more samples.");
+    auto pick = [&kept](const auto &values)
+    {
+      std::decay_t<decltype(values)> result;
+      for (const auto i : kept)
+        result.push_back(values[i]);
+      return result;
+    };
+    KinematicsData cut = *this;
+    cut.time           = pick(time);
+    for (auto &t : cut.time)
+      t -= start;
+    for (auto &b : cut.bodies)
+      b.poses = pick(b.poses);
+    for (auto &j : cut.joints)
+    {
+      j.angle  = pick(j.angle);
+      j.target = pick(j.target);
+    }
+    for (auto &h : cut.link_forces)
+    {
+      h.force        = pick(h.force);
+      h.normal_force = pick(h.normal_force);
+    }
+    cut.equilibrium_time -= start;
+    cut.phases.clear();
+    for (auto p : phases)
+      if (p.start_time >= start - 1e-12 && p.end_time <= end + 1e-12)
+      {
+        p.start_time -= start;
+        p.end_time -= start;
+        cut.phases.push_back(p);
+      }
+    return cut;
+  }
 
   void write_kinematics_file(const KinematicsData &data,
                              const std::string    &filename)
@@ -309,24 +414,50 @@ namespace softgrasp
       Handle equilibrium = create_group(file, "equilibrium");
       write_number_attribute<double>(
           equilibrium, "time", data.equilibrium_time, H5T_NATIVE_DOUBLE);
-      std::string links;
+      std::vector<std::string> links;
+      for (const auto &f : data.equilibrium_forces)
+        links.push_back(link_name(f.body, f.geom));
+      write_string_attribute(equilibrium, "links", join_links(links));
       for (const auto &f : data.equilibrium_forces)
       {
-        join({f.body, f.geom}); // rejects names with ',' or '/'
-        links += (links.empty() ? "" : ",") + f.body + "/" + f.geom;
-      }
-      write_string_attribute(equilibrium, "links", links);
-      for (const auto &f : data.equilibrium_forces)
-      {
-        if (H5Lexists(equilibrium, f.body.c_str(), H5P_DEFAULT) <= 0)
-          create_group(equilibrium, f.body);
-        Handle body(H5Gopen2(equilibrium, f.body.c_str(), H5P_DEFAULT),
-                    H5Gclose);
+        Handle body = group_in(equilibrium, f.body);
         Handle link = create_group(body, f.geom);
         write_dataset(
             link, "force", {f.force[0], f.force[1], f.force[2]}, 3, 1);
         write_dataset(
             link, "normal", {f.normal[0], f.normal[1], f.normal[2]}, 3, 1);
+      }
+
+      Handle histories = create_group(file, "link_forces");
+      links.clear();
+      for (const auto &h : data.link_forces)
+      {
+        links.push_back(link_name(h.body, h.geom));
+        if (h.force.size() != data.time.size() ||
+            h.normal_force.size() != data.time.size())
+          throw InputError("The force history of link " + links.back() +
+                           " has " + std::to_string(h.force.size()) +
+                           " samples for " + std::to_string(data.time.size()) +
+                           " times. Fix: record one force per time sample.");
+      }
+      write_string_attribute(histories, "links", join_links(links));
+      for (const auto &h : data.link_forces)
+      {
+        Handle body = group_in(histories, h.body);
+        Handle link = create_group(body, h.geom);
+        write_vectors(link, "force", h.force);
+        write_vectors(link, "normal_force", h.normal_force);
+      }
+
+      Handle phases = create_group(file, "phases");
+      write_string_attribute(phases, "names", names_list(data.phases));
+      for (const auto &p : data.phases)
+      {
+        Handle group = create_group(phases, p.name);
+        for (const auto &[key, value] : {std::pair{"start_time", p.start_time},
+                                         {"end_time", p.end_time},
+                                         {"amount", p.amount}})
+          write_number_attribute<double>(group, key, value, H5T_NATIVE_DOUBLE);
       }
     }
     AtomicFile::commit(temporary, filename);
@@ -444,6 +575,45 @@ namespace softgrasp
       f.force  = {force[0], force[1], force[2]};
       f.normal = {normal[0], normal[1], normal[2]};
       data.equilibrium_forces.push_back(f);
+    }
+
+    Handle histories = reader.open_group(file, "link_forces");
+    for (const auto &link : names_of(
+             reader.string_attribute(histories, "links", "/link_forces")))
+    {
+      const auto slash = link.find('/');
+      if (slash == std::string::npos)
+        reader.fail("lists the link '" + link + "' in '/link_forces'",
+                    "name links as body/geom");
+      const std::string           path  = "/link_forces/" + link;
+      Handle                      group = reader.open_group(histories, link);
+      KinematicsData::LinkHistory h;
+      h.body  = link.substr(0, slash);
+      h.geom  = link.substr(slash + 1);
+      h.force = vectors_of(reader.dataset(group, "force", path + "/force", n, 3));
+      h.normal_force = vectors_of(reader.dataset(
+          group, "normal_force", path + "/normal_force", n, 3));
+      data.link_forces.push_back(h);
+    }
+
+    Handle phases = reader.open_group(file, "phases");
+    for (const auto &name :
+         names_of(reader.string_attribute(phases, "names", "/phases")))
+    {
+      const std::string     path  = "/phases/" + name;
+      Handle                group = reader.open_group(phases, name);
+      KinematicsData::Phase p;
+      p.name       = name;
+      p.start_time = reader.number_attribute(group, "start_time", path);
+      p.end_time   = reader.number_attribute(group, "end_time", path);
+      p.amount     = reader.number_attribute(group, "amount", path);
+      if (!(p.end_time > p.start_time) || !std::isfinite(p.amount))
+        reader.fail("has the phase '" + path + "' with start_time " +
+                        std::to_string(p.start_time) + " s, end_time " +
+                        std::to_string(p.end_time) + " s, amount " +
+                        std::to_string(p.amount),
+                    "write finite values with end_time > start_time");
+      data.phases.push_back(p);
     }
     return data;
   }

@@ -177,6 +177,7 @@ namespace softgrasp
                                                solver_parameters,
                                                mapping_degree,
                                                timers);
+    stopped           = false;
     const bool resume = solver_parameters.checkpoint.resume;
     if (resume)
     {
@@ -272,8 +273,9 @@ namespace softgrasp
       record_step(
           t_new, last_newton_iterations, last_linear_iterations, cut_backs);
 
-      const unsigned int vtu  = solver_parameters.output.vtu_interval;
-      const bool         last = state.time >= time.end_time * (1 - 1e-12);
+      const unsigned int vtu = solver_parameters.output.vtu_interval;
+      stopped                = stop_criterion && stop_criterion();
+      const bool last = stopped || state.time >= time.end_time * (1 - 1e-12);
       if ((vtu > 0 && state.step % vtu == 0) || last)
         write_fields(state.time);
       const unsigned int every = solver_parameters.checkpoint.interval;
@@ -293,8 +295,25 @@ namespace softgrasp
       if (cut_backs == 0)
         dt = std::min(2 * dt, time.step_size);
       state.step_size = dt;
+      if (stopped)
+      {
+        pcout << "Stop criterion met at t = " << state.time << " s."
+              << std::endl;
+        break;
+      }
     }
     timers.print_wall_time_statistics(comm);
+  }
+
+  template <int dim>
+  void QuasiStaticSolver<dim>::set_stop_criterion(std::function<bool()> f)
+  {
+    stop_criterion = std::move(f);
+  }
+
+  template <int dim> bool QuasiStaticSolver<dim>::stopped_by_criterion() const
+  {
+    return stopped;
   }
 
   template <int dim>

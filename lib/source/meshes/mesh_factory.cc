@@ -107,6 +107,18 @@ namespace softgrasp
                       "Centre of the ball. Unit: m.");
     prm.declare_entry(
         "Radius", "0.04", Patterns::Double(0), "Radius of the ball. Unit: m.");
+    prm.declare_entry("Core radius",
+                      "0",
+                      Patterns::Double(0),
+                      "Radius of a rigid core that holds the ball (a shell "
+                      "mesh whose inner surface has boundary id 1, to be "
+                      "fixed by a Dirichlet condition); 0: a solid ball. "
+                      "Unit: m.");
+    prm.declare_entry("Shell cells",
+                      "6",
+                      Patterns::Selection("6|12|24|48|96"),
+                      "Coarse cells of the shell around a core (3D: 6, 12, "
+                      "24, 48 or 96; 2D: any). Unit: 1.");
     prm.leave_subsection();
     prm.enter_subsection("File");
     prm.declare_entry("File name",
@@ -167,7 +179,16 @@ namespace softgrasp
     prm.leave_subsection();
     prm.enter_subsection("Ball");
     center = parse_point<dim>(prm.get("Center"), "Mesh/Ball/Center");
-    radius = prm.get_double("Radius");
+    radius      = prm.get_double("Radius");
+    core_radius = prm.get_double("Core radius");
+    shell_cells = prm.get_integer("Shell cells");
+    if (core_radius >= radius)
+      throw InputError("'Mesh/Ball/Core radius' (" +
+                       std::to_string(core_radius) +
+                       " m) is not smaller than 'Mesh/Ball/Radius' (" +
+                       std::to_string(radius) +
+                       " m). Fix: give a core radius below the radius, or 0 "
+                       "for a solid ball.");
     prm.leave_subsection();
     prm.enter_subsection("File");
     file_name = Utilities::trim(prm.get("File name"));
@@ -206,7 +227,18 @@ namespace softgrasp
           triangulation, elements_per_edge, thickness, layers);
       break;
     case Type::ball:
-      GridGenerator::hyper_ball_balanced(triangulation, center, radius);
+      if (core_radius > 0)
+      {
+        // hyper_shell: 0 inner, 1 outer; softgrasp: 0 outer, 1 core.
+        GridGenerator::hyper_shell(
+            triangulation, center, core_radius, radius, shell_cells, true);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              face->set_boundary_id(face->boundary_id() == 0 ? 1 : 0);
+      }
+      else
+        GridGenerator::hyper_ball_balanced(triangulation, center, radius);
       break;
     case Type::file:
       Meshes::read_mesh_file(triangulation, file_name, scale);

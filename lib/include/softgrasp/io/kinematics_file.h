@@ -12,12 +12,12 @@ namespace softgrasp
    * The kinematics a rigid-body simulator (MuJoCo) hands to the finite
    * element solver: every body's world pose over time, the geoms of each
    * body, the joint angles and targets, and the contact forces at the
-   * equilibrium grasp. The HDF5 layout (schema version 1) is documented in
+   * equilibrium grasp. The HDF5 layout (schema version 2) is documented in
    * doc/kinematics_file.md. SI units: s, m, rad, N.
    */
   struct KinematicsData
   {
-    static constexpr int schema_version = 1;
+    static constexpr int schema_version = 2;
 
     struct Geom
     {
@@ -43,18 +43,55 @@ namespace softgrasp
     {
       std::string     body, geom;
       Eigen::Vector3d force  = Eigen::Vector3d::Zero(); ///< world (N)
-      Eigen::Vector3d normal = Eigen::Vector3d::Zero(); ///< world (1)
+      /// Unit contact normal, world, from the link into the object: the
+      /// link's outward surface normal (1).
+      Eigen::Vector3d normal = Eigen::Vector3d::Zero();
     };
+
+    /// The contact force MuJoCo computed on a link at every time sample.
+    struct LinkHistory
+    {
+      std::string                  body, geom;
+      std::vector<Eigen::Vector3d> force; ///< on the link, world (N)
+      /// Normal part: sum over the link's contacts of (n n^T) f (N).
+      std::vector<Eigen::Vector3d> normal_force;
+    };
+    /**
+     * A phase of the recorded run, e.g. "closing" (simulated up to the
+     * equilibrium state), "indentation" (the fingers closed further by
+     * @p amount rad, poses from forward kinematics) or "pull" (the base
+     * moved by @p amount m along the slider).
+     */
+    struct Phase
+    {
+      std::string name;
+      double      start_time = 0; ///< s
+      double      end_time   = 0; ///< s
+      double      amount     = 0; ///< rad or m, see the phase
+    };
+
+    /// The phase called @p name; an InputError listing the phases if none.
+    const Phase &phase(const std::string &name) const;
+
+    /**
+     * The samples with start_time <= t <= end_time, with times shifted so
+     * that @p start_time becomes 0 (the equilibrium state as time 0 of a
+     * finite element run). Histories are cut alike; phases are kept if
+     * they lie inside and shifted.
+     */
+    KinematicsData slice(const double start_time, const double end_time) const;
 
     std::string         source; ///< what produced the file
     std::vector<double> time;   ///< s, strictly increasing
     std::vector<Body>   bodies;
     std::vector<Joint>  joints;
     double equilibrium_time = std::numeric_limits<double>::quiet_NaN(); ///< s
-    std::vector<LinkForce> equilibrium_forces;
+    std::vector<LinkForce>   equilibrium_forces;
+    std::vector<LinkHistory> link_forces;
+    std::vector<Phase>       phases;
   };
 
-  /// Write @p data to @p filename (HDF5, schema version 1), atomically.
+  /// Write @p data to @p filename (HDF5, schema version 2), atomically.
   void write_kinematics_file(const KinematicsData &data,
                              const std::string    &filename);
 

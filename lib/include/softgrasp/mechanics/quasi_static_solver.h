@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
+#include <functional>
 #include <memory>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/base/progress_reporter.h>
@@ -67,6 +68,15 @@ namespace softgrasp
     const ContactOutput<dim> *contact_output() const;
     /// Per-step contact forces per geom and body (CSV).
     const HistoryWriter &contact_history() const;
+    /**
+     * Stop the run after the first converged step at which @p criterion
+     * (called on all ranks, after the step's history is recorded) returns
+     * true, e.g. a target force on a finger link; the state is written.
+     */
+    void set_stop_criterion(std::function<bool()> criterion);
+    /// True if the last run() ended by the stop criterion.
+    bool stopped_by_criterion() const;
+
     /// Wall-clock times per phase (setup, assembly, linear solve, output).
     dealii::TimerOutput &timer();
 
@@ -104,6 +114,8 @@ namespace softgrasp
     ProgressReporter                                  progress;
     RunState                                          state;
     std::vector<dealii::Point<dim>>                   monitor_points;
+    std::function<bool()>                             stop_criterion;
+    bool         stopped                = false;
     unsigned int last_output_step       = static_cast<unsigned int>(-1);
     unsigned int last_newton_iterations = 0;
     unsigned int last_linear_iterations = 0;

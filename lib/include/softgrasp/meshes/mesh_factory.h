@@ -19,7 +19,7 @@ namespace softgrasp
    * otherwise) and these boundary ids:
    *  - block: 0/1 at x min/max, 2/3 at y min/max, 4/5 at z min/max;
    *  - Cook's membrane: see Meshes::cook_membrane();
-   *  - ball: 0 on the sphere.
+   *  - ball: 0 on the sphere, 1 on the rigid core ("Core radius" > 0).
    */
   template <int dim> class MeshFactory
   {
@@ -55,7 +55,9 @@ namespace softgrasp
     unsigned int layers            = 1;
     // ball
     dealii::Point<dim> center;        ///< m
-    double             radius = 0.04; ///< m
+    double             radius      = 0.04; ///< m
+    double             core_radius = 0;    ///< m; > 0: shell on a core
+    unsigned int       shell_cells = 6;
     // file
     std::string file_name;
     double      scale = 1.0; ///< file units to m

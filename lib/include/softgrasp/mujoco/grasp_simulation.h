@@ -1,0 +1,76 @@
+#ifndef softgrasp_mujoco_grasp_simulation_h
+#define softgrasp_mujoco_grasp_simulation_h
+
+#include <memory>
+#include <ostream>
+#include <softgrasp/io/kinematics_file.h>
+#include <softgrasp/mujoco/grasp_parameters.h>
+#include <softgrasp/mujoco/link_forces.h>
+#include <softgrasp/mujoco/mujoco_model.h>
+
+namespace softgrasp
+{
+  /**
+   * The rigid half of the framework: MuJoCo closes the hand around the
+   * object to the equilibrium grasp, then records the phases the finite
+   * element solver replays, all into one KinematicsData (written with
+   * write_kinematics_file()):
+   *
+   *  1. "closing": every finger joint's actuator target ramps at the
+   *     closing speed until that joint's link touches the object, then is
+   *     set to the touch angle plus the grip; the simulation continues
+   *     until the equilibrium state: every contact link touches, every
+   *     joint is at rest and the link forces have settled. Recorded from
+   *     MuJoCo's state (simulated time).
+   *  2. "indentation": the finger joints are closed further, by
+   *     extra_angle * k/samples. The recorded poses are MuJoCo's forward
+   *     kinematics of the equilibrium angles plus that closure with the
+   *     object where it was (what the finite element solver drives); the
+   *     recorded forces are MuJoCo's own, settled at the same actuator
+   *     targets (the rigid model's answer to the same command).
+   *  3. "pull" (if a distance is set): the base moves along the slide
+   *     joint; poses by forward kinematics, forces from the simulation.
+   *
+   * Times after the equilibrium are pseudo-times (the phase durations).
+   */
+  class GraspSimulation
+  {
+  public:
+    GraspSimulation(const GraspParameters &parameters, std::ostream &log);
+    ~GraspSimulation();
+
+    /// Run all phases; throws an InputError if no equilibrium is reached.
+    KinematicsData run();
+
+    const MujocoModel &model() const;
+
+  private:
+    void place_base();
+    void close_to_equilibrium();
+    void indent();
+    void pull();
+    /// Step until at rest with settled forces, at most @p max_time (s).
+    bool settle(const double max_time, const bool require_links);
+    bool touches_object(const int body) const;
+    std::vector<std::string> missing_links() const;
+    void                     set_target(const int joint, const double value);
+    /// Append a sample: poses from @p pose_data, forces from the simulation.
+    void record(const double time, const mjData *pose_data);
+    /// Forward kinematics of the equilibrium with joint angles changed.
+    void forward_kinematics(const std::vector<double> &finger_angles,
+                            const double               slide);
+
+    const GraspParameters parameters;
+    std::ostream         &log;
+    MujocoModel           mujoco;
+    mjData               *fk_data = nullptr;
+    int                   object_body, base_body, slide_joint = -1;
+    std::vector<int>      finger_joints, finger_actuators, link_geoms;
+    std::vector<int>      required_links;
+    std::vector<int>      hand_bodies;
+    std::vector<double>   equilibrium_qpos, equilibrium_targets;
+    KinematicsData        data;
+  };
+} // namespace softgrasp
+
+#endif

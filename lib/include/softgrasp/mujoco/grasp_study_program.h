@@ -1,0 +1,39 @@
+#ifndef softgrasp_mujoco_grasp_study_program_h
+#define softgrasp_mujoco_grasp_study_program_h
+
+#include <functional>
+#include <string>
+
+namespace softgrasp
+{
+  class IndentationStudy;
+
+  /**
+   * The main() of a grasp study (studies/sphere_squeeze, ...):
+   *
+   *   program [--print-parameters] [file.prm]
+   *
+   * reads the .prm ("Rigid environment", "Indentation study" and everything
+   * a QuasiStaticSolver<3> reads), then
+   *  1. if "Indentation study/Rigid stage" is "run": MuJoCo closes the hand
+   *     to the equilibrium grasp and records the indentation phase
+   *     (GraspSimulation, on rank 0) into the kinematics file;
+   *  2. reads the kinematics file and runs the finite element indentation
+   *     (IndentationStudy) on all ranks.
+   * Errors become a message on stderr and exit code 1. @p report, if set,
+   * is called after a successful run (all ranks).
+   *
+   * MPI must be initialised by the caller.
+   */
+  struct GraspStudyProgram
+  {
+    std::string default_parameter_file;
+    /// Run the rigid stage only (write the kinematics file and stop).
+    bool rigid_only = false;
+    std::function<void(const IndentationStudy &)> report;
+
+    int run(int argc, char **argv) const;
+  };
+} // namespace softgrasp
+
+#endif

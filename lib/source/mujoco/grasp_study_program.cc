@@ -1,0 +1,112 @@
+#include <deal.II/base/mpi.h>
+#include <filesystem>
+#include <iostream>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/grasp/indentation_study.h>
+#include <softgrasp/mechanics/quasi_static_program.h>
+#include <softgrasp/mujoco/grasp_simulation.h>
+#include <softgrasp/mujoco/grasp_study_program.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void read_study_parameters(ParameterHandler  &prm,
+                               const std::string &filename)
+    {
+      GraspParameters::declare_parameters(prm);
+      IndentationStudy::declare_parameters(prm);
+      QuasiStaticProgram::read_parameters<3>(prm, filename);
+    }
+
+    /// The rigid stage on rank 0; its error (if any) reaches every rank.
+    void run_rigid_stage(MPI_Comm           comm,
+                         ParameterHandler  &prm,
+                         const std::string &prm_file,
+                         const std::string &kinematics_file)
+    {
+      std::string error;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        try
+        {
+          GraspParameters parameters;
+          parameters.parse_parameters(
+              prm, std::filesystem::path(prm_file).parent_path().string());
+          GraspSimulation simulation(parameters, std::cout);
+          const auto      data = simulation.run();
+          std::filesystem::create_directories(
+              std::filesystem::path(kinematics_file).parent_path());
+          write_kinematics_file(data, kinematics_file);
+          std::cout << "Kinematics file: " << kinematics_file << "\n\n";
+        }
+        catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+      }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      if (!error.empty())
+        throw InputError(error);
+    }
+  } // namespace
+
+  int GraspStudyProgram::run(int argc, char **argv) const
+  {
+    const MPI_Comm comm     = MPI_COMM_WORLD;
+    const bool     root     = Utilities::MPI::this_mpi_process(comm) == 0;
+    bool           print    = false;
+    std::string    filename = default_parameter_file;
+    for (int i = 1; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      if (arg == "--print-parameters")
+        print = true;
+      else if (arg == "--help" || arg == "-h")
+      {
+        if (root)
+          std::cout << "Usage: " << argv[0]
+                    << " [--print-parameters] [file.prm]\n"
+                       "Runs MuJoCo to the equilibrium grasp (unless "
+                       "'Indentation study/Rigid stage' is 'read'), then the "
+                       "finite element indentation.\nDefault parameter file: "
+                    << default_parameter_file << std::endl;
+        return 0;
+      }
+      else
+        filename = arg;
+    }
+    try
+    {
+      ParameterHandler prm;
+      read_study_parameters(prm, filename);
+      if (print)
+      {
+        if (root)
+          prm.print_parameters(std::cout, ParameterHandler::PRM);
+        return 0;
+      }
+      IndentationStudy study(comm, prm);
+      prm.enter_subsection("Output");
+      const std::string directory = prm.get("Directory");
+      prm.leave_subsection();
+      const std::string kinematics_file = study.kinematics_file(directory);
+      if (study.rigid_stage_requested() || rigid_only)
+        run_rigid_stage(comm, prm, filename, kinematics_file);
+      if (rigid_only)
+        return 0;
+      study.run(read_kinematics_file(kinematics_file));
+      if (report)
+        report(study);
+    }
+    catch (const std::exception &e)
+    {
+      if (root)
+        std::cerr << "\nError: " << e.what() << std::endl;
+      return 1;
+    }
+    return 0;
+  }
+} // namespace softgrasp
