@@ -16,7 +16,7 @@ packages=(
   # data, algebra, serialization
   libhdf5-dev libeigen3-dev libboost-dev libboost-serialization-dev
   # testing and plotting
-  numdiff libbenchmark-dev gnuplot-nox
+  numdiff libbenchmark-dev gnuplot-nox time
 )
 
 missing=()

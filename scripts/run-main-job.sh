@@ -1,26 +1,23 @@
 #!/usr/bin/env bash
-# The main job: install dependencies, build, and run
-#  1. the tissue_curves example: stress-stretch response of every tissue
-#     preset, CSV file and PNG plots in
-#       build/examples/tissue_curves/tissue_curves_output/
-#  2. the cook_membrane example: the quasi-static finite-strain solver on
-#     Cook's membrane, compared with the published tip deflection; VTU/PVD
-#     and history CSV in build/examples/cook_membrane/cook_membrane_output/
-#  3. the hertz_indentation example: a rigid sphere pressed into soft
-#     tissue with mortar contact, compared with Hertz's force; contact
-#     fields (VTU) and force history (CSV) in
-#     build/examples/hertz_indentation/hertz_output/
+# The main job: install dependencies, build, and run the sphere_squeeze
+# study from MuJoCo kinematics alone:
+#  1. MuJoCo closes the three-finger hand on a free sphere (radius 40 mm) to
+#     the equilibrium grasp and records the fingers closing 0.04 rad further
+#     (kinematics.h5);
+#  2. the finite element solver drives the same capsule links into a rubber
+#     sphere on those poses, with mortar contact and Coulomb friction.
+# Results in build/studies/sphere_squeeze/sphere_squeeze_output/:
+#   sphere_picture.png  the indented sphere coloured by e_max, with the links
+#   sphere_forces.png   normal and lateral force against closure per link,
+#                       finite elements next to MuJoCo
+#   sphere_links.csv    the same numbers; sphere.pvd (e_max, contact fields)
+#   kinematics.h5       the MuJoCo kinematics (doc/kinematics_file.md)
+# The tutorial examples (tissue_curves, cook_membrane, hertz_indentation,
+# ironing) are built too and run by the test suite.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-dependencies.sh"
-"$root/scripts/configure-and-build.sh" --target tissue_curves cook_membrane \
-  hertz_indentation
-cd "$root/build/examples/tissue_curves"
-./tissue_curves tissue_curves.prm
-echo "Results: $(pwd)/tissue_curves_output/ (uniaxial.png, equibiaxial.png, tissue_curves.csv)"
-cd "$root/build/examples/cook_membrane"
-./cook_membrane cook_membrane.prm
-echo "Results: $(pwd)/cook_membrane_output/ (cook.pvd, cook_history.csv)"
-cd "$root/build/examples/hertz_indentation"
-./hertz_indentation hertz_indentation.prm
-echo "Results: $(pwd)/hertz_output/ (hertz.pvd, hertz_contact.csv, hertz_history.csv)"
+"$root/scripts/configure-and-build.sh" --target sphere_squeeze
+cd "$root/build/studies/sphere_squeeze"
+./sphere_squeeze sphere_squeeze.prm
+echo "Results: $(pwd)/sphere_squeeze_output/ (sphere_picture.png, sphere_forces.png, sphere_links.csv, sphere.pvd, kinematics.h5)"

@@ -42,10 +42,13 @@ namespace softgrasp
         if (type == "capsule")
           cap(h, 1, 8);
       }
-      const auto point = [&](const double angle, const std::pair<double, double> &zr)
+      const auto point =
+          [&](const double angle, const std::pair<double, double> &zr)
       {
-        const Eigen::Vector3d x = pose.to_world(Eigen::Vector3d(
-            zr.second * std::cos(angle), zr.second * std::sin(angle), zr.first));
+        const Eigen::Vector3d x =
+            pose.to_world(Eigen::Vector3d(zr.second * std::cos(angle),
+                                          zr.second * std::sin(angle),
+                                          zr.first));
         out << 1e3 * x[0] << ' ' << 1e3 * x[1] << ' ' << 1e3 * x[2] << '\n';
       };
       for (const auto &zr : profile) // rings
@@ -62,7 +65,8 @@ namespace softgrasp
       }
     }
 
-    void write_box(std::ostream &out, const Eigen::Vector3d size, const Pose &pose)
+    void
+    write_box(std::ostream &out, const Eigen::Vector3d size, const Pose &pose)
     {
       for (unsigned int axis = 0; axis < 3; ++axis)
         for (int a = -1; a <= 1; a += 2)
@@ -71,9 +75,9 @@ namespace softgrasp
             for (int c = -1; c <= 1; c += 2)
             {
               Eigen::Vector3d local;
-              local[axis]           = c * size[axis];
-              local[(axis + 1) % 3] = a * size[(axis + 1) % 3];
-              local[(axis + 2) % 3] = b * size[(axis + 2) % 3];
+              local[axis]             = c * size[axis];
+              local[(axis + 1) % 3]   = a * size[(axis + 1) % 3];
+              local[(axis + 2) % 3]   = b * size[(axis + 2) % 3];
               const Eigen::Vector3d x = pose.to_world(local);
               out << 1e3 * x[0] << ' ' << 1e3 * x[1] << ' ' << 1e3 * x[2]
                   << '\n';
@@ -95,16 +99,16 @@ namespace softgrasp
     std::vector<Point<3>> vertices;
     for (const unsigned int v : GeometryInfo<3>::vertex_indices())
       vertices.push_back(GeometryInfo<3>::unit_cell_vertex(v));
-    const Quadrature<3> at_vertices(vertices);
-    FEValues<3>         fe_values(system.mapping(),
+    const Quadrature<3>              at_vertices(vertices);
+    FEValues<3>                      fe_values(system.mapping(),
                           system.fe(),
                           at_vertices,
                           update_values | update_gradients |
                               update_quadrature_points);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<Tensor<1, 3>>            u(8);
-    std::vector<Tensor<2, 3>>            grad_u(8);
-    std::vector<double>                  quads; // 4 x (x, y, z, e_max)
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<1, 3>>        u(8);
+    std::vector<Tensor<2, 3>>        grad_u(8);
+    std::vector<double>              quads; // 4 x (x, y, z, e_max)
     for (const auto &cell : system.dof_handler().active_cell_iterators())
     {
       if (!cell->is_locally_owned() || !cell->at_boundary())
@@ -121,8 +125,8 @@ namespace softgrasp
         if (!reinitialised)
         {
           fe_values.reinit(cell);
-          fe_values[displacement].get_function_values(
-              system.ghosted_solution(), u);
+          fe_values[displacement].get_function_values(system.ghosted_solution(),
+                                                      u);
           fe_values[displacement].get_function_gradients(
               system.ghosted_solution(), grad_u);
           reinitialised = true;
@@ -131,8 +135,8 @@ namespace softgrasp
         {
           const unsigned int q = GeometryInfo<3>::face_to_cell_vertices(f, v);
           const Point<3>     x = fe_values.quadrature_point(q) + u[q];
-          const auto e = PrincipalStrains::compute(unit_symmetric_tensor<3>() +
-                                                   grad_u[q]);
+          const auto         e =
+              PrincipalStrains::compute(unit_symmetric_tensor<3>() + grad_u[q]);
           quads.insert(quads.end(),
                        {1e3 * x[0], 1e3 * x[1], 1e3 * x[2], e.e_max()});
         }

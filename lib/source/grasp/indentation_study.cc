@@ -109,16 +109,15 @@ namespace softgrasp
         prm.enter_subsection("Mesh");
         prm.enter_subsection("Ball");
         std::ostringstream center;
-        center << std::setprecision(17) << p[0] << ", " << p[1] << ", "
-               << p[2];
+        center << std::setprecision(17) << p[0] << ", " << p[1] << ", " << p[2];
         prm.set("Center", center.str());
         prm.leave_subsection();
         prm.leave_subsection();
       }
 
     QuasiStaticSolver<3> solver(comm, prm);
-    solver.rigid_bodies() = rigid_bodies_from(cut);
-    const auto &bodies    = solver.rigid_bodies();
+    solver.rigid_bodies()           = rigid_bodies_from(cut);
+    const auto              &bodies = solver.rigid_bodies();
     std::vector<std::string> labels;
     for (unsigned int b = 0; b < bodies.bodies().size(); ++b)
       for (unsigned int g = 0; g < bodies.bodies()[b].geoms().size(); ++g)
@@ -131,7 +130,8 @@ namespace softgrasp
         valid += (valid.empty() ? "" : ", ") + l;
       throw InputError("'Indentation study/Target link' = '" + target_link +
                        "' is not a link of the kinematics file. Fix: use one "
-                       "of: " + valid + ".");
+                       "of: " +
+                       valid + ".");
     }
     if (target_force > 0)
       solver.set_stop_criterion(
@@ -139,21 +139,20 @@ namespace softgrasp
           {
             const auto &history = solver.contact_history();
             return history.value(history.rows.size() - 1,
-                                 target_link + ":normal_force") >=
-                   target_force;
+                                 target_link + ":normal_force") >= target_force;
           });
     solver.run();
 
     // Summary: closure, force balance on the body, penetration.
-    const auto  &history = solver.contact_history();
-    const double t_end   = history.value(history.rows.size() - 1, "time");
+    const auto  &history  = solver.contact_history();
+    const double t_end    = history.value(history.rows.size() - 1, "time");
     const double duration = phase.end_time - phase.start_time;
     result                = Summary();
     result.closure        = extra_angle * t_end / duration;
     result.target_met     = solver.stopped_by_criterion();
     result.steps          = history.rows.size() - 1;
-    const auto forces = solver.contact_output()->geom_forces(solver.system());
-    Eigen::Vector3d sum     = Eigen::Vector3d::Zero();
+    const auto forces   = solver.contact_output()->geom_forces(solver.system());
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     double          largest = 0;
     for (const auto &body : forces)
       for (const auto &f : body)
@@ -228,8 +227,11 @@ namespace softgrasp
     }
     std::vector<std::string> columns = {"step", "time", "closure"};
     for (const auto &l : result.links)
-      for (const char *part :
-           {"FE_normal", "FE_lateral", "FE_friction", "MJ_normal", "MJ_lateral"})
+      for (const char *part : {"FE_normal",
+                               "FE_lateral",
+                               "FE_friction",
+                               "MJ_normal",
+                               "MJ_lateral"})
         columns.push_back(l + ":" + part);
     table = HistoryWriter(solver.parameters().output.directory + "/" +
                           solver.parameters().output.base_name + "_links.csv");
@@ -237,12 +239,13 @@ namespace softgrasp
 
     // MuJoCo's forces at time t, interpolated between the samples.
     const auto rigid_at = [&cut](const KinematicsData::LinkHistory &h,
-                                 const double t, const bool normal)
+                                 const double                       t,
+                                 const bool                         normal)
     {
       const auto value = [&](const std::size_t i)
       {
-        return normal ? h.normal_force[i].norm() :
-                        (h.force[i] - h.normal_force[i]).norm();
+        return normal ? h.normal_force[i].norm()
+                      : (h.force[i] - h.normal_force[i]).norm();
       };
       std::size_t i = 0;
       while (i + 2 < cut.time.size() && cut.time[i + 1] < t)
@@ -255,14 +258,13 @@ namespace softgrasp
     result.normal_rigid.assign(result.links.size(), 0);
     for (std::size_t row = 0; row < history.rows.size(); ++row)
     {
-      const double        t = history.value(row, "time");
-      std::vector<double> values = {history.value(row, "step"),
-                                    t,
-                                    extra_angle * t / duration};
+      const double        t      = history.value(row, "time");
+      std::vector<double> values = {
+          history.value(row, "step"), t, extra_angle * t / duration};
       for (std::size_t l = 0; l < result.links.size(); ++l)
       {
-        const auto &label = result.links[l];
-        const auto  h     = std::find_if(cut.link_forces.begin(),
+        const auto &label      = result.links[l];
+        const auto  h          = std::find_if(cut.link_forces.begin(),
                                     cut.link_forces.end(),
                                     [&](const auto &x)
                                     { return x.body + "/" + x.geom == label; });

@@ -326,9 +326,11 @@ namespace softgrasp
       if (time[i] >= start - 1e-12 && time[i] <= end + 1e-12)
         kept.push_back(i);
     if (kept.size() < 2)
-      throw InputError("The kinematics (" + source + ") have fewer than two "
-                       "samples between " + std::to_string(start) + " s and " +
-                       std::to_string(end) + " s. Fix: record the phase with "
+      throw InputError("The kinematics (" + source +
+                       ") have fewer than two "
+                       "samples between " +
+                       std::to_string(start) + " s and " + std::to_string(end) +
+                       " s. Fix: record the phase with "
                        "more samples.");
     auto pick = [&kept](const auto &values)
     {
@@ -578,8 +580,8 @@ namespace softgrasp
     }
 
     Handle histories = reader.open_group(file, "link_forces");
-    for (const auto &link : names_of(
-             reader.string_attribute(histories, "links", "/link_forces")))
+    for (const auto &link :
+         names_of(reader.string_attribute(histories, "links", "/link_forces")))
     {
       const auto slash = link.find('/');
       if (slash == std::string::npos)
@@ -588,11 +590,12 @@ namespace softgrasp
       const std::string           path  = "/link_forces/" + link;
       Handle                      group = reader.open_group(histories, link);
       KinematicsData::LinkHistory h;
-      h.body  = link.substr(0, slash);
-      h.geom  = link.substr(slash + 1);
-      h.force = vectors_of(reader.dataset(group, "force", path + "/force", n, 3));
-      h.normal_force = vectors_of(reader.dataset(
-          group, "normal_force", path + "/normal_force", n, 3));
+      h.body = link.substr(0, slash);
+      h.geom = link.substr(slash + 1);
+      h.force =
+          vectors_of(reader.dataset(group, "force", path + "/force", n, 3));
+      h.normal_force = vectors_of(
+          reader.dataset(group, "normal_force", path + "/normal_force", n, 3));
       data.link_forces.push_back(h);
     }
 

@@ -178,7 +178,7 @@ namespace softgrasp
     layers            = prm.get_integer("Layers");
     prm.leave_subsection();
     prm.enter_subsection("Ball");
-    center = parse_point<dim>(prm.get("Center"), "Mesh/Ball/Center");
+    center      = parse_point<dim>(prm.get("Center"), "Mesh/Ball/Center");
     radius      = prm.get_double("Radius");
     core_radius = prm.get_double("Core radius");
     shell_cells = prm.get_integer("Shell cells");

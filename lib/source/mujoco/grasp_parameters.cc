@@ -122,10 +122,8 @@ namespace softgrasp
                           Patterns::Double(0),
                           "Pull distance after the indentation; 0: no pull "
                           "phase. Unit: m.");
-        prm.declare_entry("Duration",
-                          "1",
-                          Patterns::Double(0),
-                          "Time of the pull. Unit: s.");
+        prm.declare_entry(
+            "Duration", "1", Patterns::Double(0), "Time of the pull. Unit: s.");
         prm.declare_entry("Samples",
                           "10",
                           Patterns::Integer(1),
@@ -151,7 +149,8 @@ namespace softgrasp
     const CheckedSection section(prm, "Rigid environment");
     scene_file = prm.get("Scene file");
     if (!scene_file.empty() && scene_file[0] != '/' && !base_directory.empty())
-      scene_file = (std::filesystem::path(base_directory) / scene_file).string();
+      scene_file =
+          (std::filesystem::path(base_directory) / scene_file).string();
     object_body    = prm.get("Object body");
     base_body      = prm.get("Hand base body");
     const auto p   = section.get_number_list("Base position");

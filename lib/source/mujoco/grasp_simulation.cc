@@ -28,8 +28,8 @@ namespace softgrasp
           << mujoco.warnings() << '\n';
     mujoco.check_contact_time_constants();
     const mjModel *m = mujoco.model();
-    object_body = mujoco.id(mjOBJ_BODY, parameters.object_body, "body");
-    base_body   = mujoco.id(mjOBJ_BODY, parameters.base_body, "body");
+    object_body      = mujoco.id(mjOBJ_BODY, parameters.object_body, "body");
+    base_body        = mujoco.id(mjOBJ_BODY, parameters.base_body, "body");
     for (const auto &name : parameters.finger_joints)
     {
       const int j = mujoco.id(mjOBJ_JOINT, name, "joint");
@@ -45,9 +45,14 @@ namespace softgrasp
     }
     for (const auto &name : parameters.contact_links)
       required_links.push_back(mujoco.id(mjOBJ_GEOM, name, "geom"));
-    if (parameters.pull.distance > 0)
+    // The slide joint is recorded whenever the scene has it (the base may
+    // give way along it while grasping); a pull needs it.
+    slide_joint =
+        mj_name2id(m, mjOBJ_JOINT, parameters.pull.slide_joint.c_str());
+    if (parameters.pull.distance > 0 || slide_joint >= 0)
     {
-      slide_joint = mujoco.id(mjOBJ_JOINT, parameters.pull.slide_joint, "joint");
+      slide_joint =
+          mujoco.id(mjOBJ_JOINT, parameters.pull.slide_joint, "joint");
       if (m->jnt_type[slide_joint] != mjJNT_SLIDE ||
           mujoco.actuator_of_joint(slide_joint) < 0)
         throw InputError("'Rigid environment/Pull/Slide joint' = '" +
@@ -59,7 +64,7 @@ namespace softgrasp
     // geoms are the links whose forces are recorded.
     for (int b = 1; b < m->nbody; ++b)
     {
-      int root = b;
+      int  root      = b;
       bool in_object = false;
       for (int p = b; p > 0; p = m->body_parentid[p])
         in_object = in_object || p == object_body;
@@ -98,7 +103,7 @@ namespace softgrasp
     mjModel *m = mujoco.model();
     for (int i = 0; i < 3; ++i)
       m->body_pos[3 * base_body + i] = parameters.base_position[i];
-    const auto &q                = parameters.base_orientation;
+    const auto &q                   = parameters.base_orientation;
     m->body_quat[4 * base_body]     = q.w();
     m->body_quat[4 * base_body + 1] = q.x();
     m->body_quat[4 * base_body + 2] = q.y();
@@ -128,17 +133,19 @@ namespace softgrasp
         if (m->geom_bodyid[g] == b)
         {
           KinematicsData::Geom geom;
-          geom.name = mj_id2name(m, mjOBJ_GEOM, g);
-          geom.type = mujoco_geom_type_name(m->geom_type[g]);
-          geom.size = {m->geom_size[3 * g],
-                       m->geom_size[3 * g + 1],
-                       m->geom_size[3 * g + 2]};
-          geom.local_pose.position = {
-              m->geom_pos[3 * g], m->geom_pos[3 * g + 1], m->geom_pos[3 * g + 2]};
-          geom.local_pose.orientation = Eigen::Quaterniond(m->geom_quat[4 * g],
-                                                           m->geom_quat[4 * g + 1],
-                                                           m->geom_quat[4 * g + 2],
-                                                           m->geom_quat[4 * g + 3]);
+          geom.name                = mj_id2name(m, mjOBJ_GEOM, g);
+          geom.type                = mujoco_geom_type_name(m->geom_type[g]);
+          geom.size                = {m->geom_size[3 * g],
+                                      m->geom_size[3 * g + 1],
+                                      m->geom_size[3 * g + 2]};
+          geom.local_pose.position = {m->geom_pos[3 * g],
+                                      m->geom_pos[3 * g + 1],
+                                      m->geom_pos[3 * g + 2]};
+          geom.local_pose.orientation =
+              Eigen::Quaterniond(m->geom_quat[4 * g],
+                                 m->geom_quat[4 * g + 1],
+                                 m->geom_quat[4 * g + 2],
+                                 m->geom_quat[4 * g + 3]);
           body.geoms.push_back(geom);
         }
       data.bodies.push_back(body);
@@ -164,7 +171,20 @@ namespace softgrasp
     indent();
     if (parameters.pull.distance > 0)
       pull();
+    log << "MuJoCo: " << data.time.size() << " samples recorded\n";
     return data;
+  }
+
+  std::string GraspSimulation::fastest_joint() const
+  {
+    const mjModel *m    = mujoco.model();
+    const mjData  *d    = mujoco.data();
+    int            best = 0;
+    for (int i = 1; i < m->nv; ++i)
+      if (std::abs(d->qvel[i]) > std::abs(d->qvel[best]))
+        best = i;
+    const char *name = mj_id2name(m, mjOBJ_JOINT, m->dof_jntid[best]);
+    return name ? name : "unnamed";
   }
 
   bool GraspSimulation::touches_object(const int body) const
@@ -215,17 +235,20 @@ namespace softgrasp
   void GraspSimulation::record(const double time, const mjData *pose_data)
   {
     const mjModel *m = mujoco.model();
-    const mjData  *d = mujoco.data();
+    mjData        *d = mujoco.data();
     if (!data.time.empty() && time <= data.time.back())
       return;
+    // After mj_step() the positions have moved on from the kinematics and
+    // contacts of the step: bring them in line with the current state.
+    mj_forward(m, d);
     data.time.push_back(time);
     std::size_t i = 0;
     for (const int b : hand_bodies)
     {
       Pose pose;
-      pose.position = {pose_data->xpos[3 * b],
-                       pose_data->xpos[3 * b + 1],
-                       pose_data->xpos[3 * b + 2]};
+      pose.position    = {pose_data->xpos[3 * b],
+                          pose_data->xpos[3 * b + 1],
+                          pose_data->xpos[3 * b + 2]};
       pose.orientation = Eigen::Quaterniond(pose_data->xquat[4 * b],
                                             pose_data->xquat[4 * b + 1],
                                             pose_data->xquat[4 * b + 2],
@@ -233,13 +256,14 @@ namespace softgrasp
       data.bodies[i++].poses.push_back(pose);
     }
     Pose object;
-    object.position    = {pose_data->xpos[3 * object_body],
+    object.position = {pose_data->xpos[3 * object_body],
                        pose_data->xpos[3 * object_body + 1],
                        pose_data->xpos[3 * object_body + 2]};
-    object.orientation = Eigen::Quaterniond(pose_data->xquat[4 * object_body],
-                                            pose_data->xquat[4 * object_body + 1],
-                                            pose_data->xquat[4 * object_body + 2],
-                                            pose_data->xquat[4 * object_body + 3]);
+    object.orientation =
+        Eigen::Quaterniond(pose_data->xquat[4 * object_body],
+                           pose_data->xquat[4 * object_body + 1],
+                           pose_data->xquat[4 * object_body + 2],
+                           pose_data->xquat[4 * object_body + 3]);
     data.bodies[i].poses.push_back(object);
 
     std::vector<int> joints = finger_joints;
@@ -277,10 +301,11 @@ namespace softgrasp
       for (std::size_t k = 0; k < current.size(); ++k)
       {
         largest = std::max(largest, current[k].force.norm());
-        change  = std::max(change, (current[k].force - previous[k].force).norm());
+        change =
+            std::max(change, (current[k].force - previous[k].force).norm());
       }
-      previous          = current;
-      const bool rest   = max_abs(d->qvel, m->nv) < parameters.velocity_tolerance;
+      previous        = current;
+      const bool rest = max_abs(d->qvel, m->nv) < parameters.velocity_tolerance;
       const bool steady = change <= parameters.force_tolerance * largest;
       const bool links  = !require_links || missing_links().empty();
       if (rest && steady && links && largest > 0)
@@ -291,8 +316,8 @@ namespace softgrasp
 
   void GraspSimulation::close_to_equilibrium()
   {
-    const mjModel      *m = mujoco.model();
-    mjData             *d = mujoco.data();
+    const mjModel      *m  = mujoco.model();
+    mjData             *d  = mujoco.data();
     const double        dt = m->opt.timestep;
     std::vector<bool>   touched(finger_joints.size(), false);
     std::vector<double> targets(finger_joints.size());
@@ -332,8 +357,8 @@ namespace softgrasp
         {
           touched[k] = true;
           targets[k] = d->qpos[m->jnt_qposadr[j]] + parameters.grip;
-          log << "  t = " << std::setw(6) << d->time << " s: "
-              << mj_id2name(m, mjOBJ_JOINT, j) << " touches at "
+          log << "  t = " << std::setw(6) << d->time
+              << " s: " << mj_id2name(m, mjOBJ_JOINT, j) << " touches at "
               << d->qpos[m->jnt_qposadr[j]] << " rad, target " << targets[k]
               << " rad\n";
         }
@@ -373,8 +398,10 @@ namespace softgrasp
         missing += " " + l;
       throw InputError(
           "MuJoCo did not reach the equilibrium grasp within 'Maximum time' "
-          "(" + std::to_string(parameters.maximum_time) +
-          " s): largest speed " + std::to_string(max_abs(d->qvel, m->nv)) +
+          "(" +
+          std::to_string(parameters.maximum_time) + " s): largest speed " +
+          std::to_string(max_abs(d->qvel, m->nv)) + " (joint '" +
+          fastest_joint() + "')" +
           (missing.empty() ? "" : ", links without contact:" + missing) +
           ". Fix: raise the maximum time or the tolerances, place the hand so "
           "that every contact link can reach the object, or shorten 'Contact "
@@ -390,10 +417,11 @@ namespace softgrasp
     for (std::size_t k = 0; k < link_geoms.size(); ++k)
       if (forces[k].n_contacts > 0)
       {
-        data.equilibrium_forces.push_back({data.link_forces[k].body,
-                                           data.link_forces[k].geom,
-                                           forces[k].force,
-                                           -forces[k].normal}); // link -> object
+        data.equilibrium_forces.push_back(
+            {data.link_forces[k].body,
+             data.link_forces[k].geom,
+             forces[k].force,
+             -forces[k].normal}); // link -> object
         log << "  " << std::setw(24) << std::left << data.link_forces[k].geom
             << std::right << " normal " << std::setw(8)
             << forces[k].normal_force.norm() << " N, lateral " << std::setw(8)
@@ -401,9 +429,9 @@ namespace softgrasp
       }
   }
 
-  void GraspSimulation::forward_kinematics(
-      const std::vector<double> &finger_angles,
-      const double               slide)
+  void
+  GraspSimulation::forward_kinematics(const std::vector<double> &finger_angles,
+                                      const double               slide)
   {
     const mjModel *m = mujoco.model();
     std::copy(equilibrium_qpos.begin(), equilibrium_qpos.end(), fk_data->qpos);
@@ -416,13 +444,12 @@ namespace softgrasp
 
   void GraspSimulation::indent()
   {
-    const mjModel    *m      = mujoco.model();
-    mjData           *d      = mujoco.data();
-    const auto       &ind    = parameters.indentation;
-    const double      start  = data.equilibrium_time;
-    const double      slide0 = slide_joint >= 0 ?
-                                 equilibrium_qpos[m->jnt_qposadr[slide_joint]] :
-                                 0;
+    const mjModel *m     = mujoco.model();
+    mjData        *d     = mujoco.data();
+    const auto    &ind   = parameters.indentation;
+    const double   start = data.equilibrium_time;
+    const double   slide0 =
+        slide_joint >= 0 ? equilibrium_qpos[m->jnt_qposadr[slide_joint]] : 0;
     log << "MuJoCo: indentation, " << ind.extra_angle << " rad more on every "
         << "finger joint in " << ind.samples << " samples\n";
     for (unsigned int s = 1; s <= ind.samples; ++s)
@@ -432,8 +459,8 @@ namespace softgrasp
       for (std::size_t k = 0; k < finger_joints.size(); ++k)
       {
         set_target(finger_joints[k], equilibrium_targets[k] + closure);
-        angles.push_back(
-            equilibrium_qpos[m->jnt_qposadr[finger_joints[k]]] + closure);
+        angles.push_back(equilibrium_qpos[m->jnt_qposadr[finger_joints[k]]] +
+                         closure);
       }
       const bool settled = settle(ind.settle_time, false);
       forward_kinematics(angles, slide0);
@@ -449,10 +476,10 @@ namespace softgrasp
 
   void GraspSimulation::pull()
   {
-    const mjModel      *m     = mujoco.model();
-    mjData             *d     = mujoco.data();
-    const auto         &p     = parameters.pull;
-    const double        start = data.time.back();
+    const mjModel      *m      = mujoco.model();
+    mjData             *d      = mujoco.data();
+    const auto         &p      = parameters.pull;
+    const double        start  = data.time.back();
     const double        slide0 = equilibrium_qpos[m->jnt_qposadr[slide_joint]];
     std::vector<double> angles;
     for (const int j : finger_joints)

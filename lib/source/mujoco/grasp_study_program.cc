@@ -1,3 +1,4 @@
+#include <chrono>
 #include <deal.II/base/mpi.h>
 #include <filesystem>
 #include <iostream>
@@ -35,8 +36,14 @@ namespace softgrasp
           GraspParameters parameters;
           parameters.parse_parameters(
               prm, std::filesystem::path(prm_file).parent_path().string());
+          const auto      start = std::chrono::steady_clock::now();
           GraspSimulation simulation(parameters, std::cout);
           const auto      data = simulation.run();
+          std::cout << "Rigid stage (MuJoCo): "
+                    << std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - start)
+                           .count()
+                    << " s wall time\n";
           std::filesystem::create_directories(
               std::filesystem::path(kinematics_file).parent_path());
           write_kinematics_file(data, kinematics_file);

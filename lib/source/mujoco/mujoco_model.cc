@@ -49,20 +49,20 @@ namespace softgrasp
     int n = 0;
     switch (type)
     {
-      case mjOBJ_BODY:
-        n = m->nbody;
-        break;
-      case mjOBJ_JOINT:
-        n = m->njnt;
-        break;
-      case mjOBJ_GEOM:
-        n = m->ngeom;
-        break;
-      case mjOBJ_ACTUATOR:
-        n = m->nu;
-        break;
-      default:
-        break;
+    case mjOBJ_BODY:
+      n = m->nbody;
+      break;
+    case mjOBJ_JOINT:
+      n = m->njnt;
+      break;
+    case mjOBJ_GEOM:
+      n = m->ngeom;
+      break;
+    case mjOBJ_ACTUATOR:
+      n = m->nu;
+      break;
+    default:
+      break;
     }
     std::vector<std::string> result;
     for (int i = 0; i < n; ++i)
@@ -81,8 +81,8 @@ namespace softgrasp
       std::string valid;
       for (const auto &n : names(type))
         valid += (valid.empty() ? "" : ", ") + n;
-      throw InputError("The scene '" + file + "' has no " + what + " '" +
-                       name + "'. Fix: use one of: " + valid + ".");
+      throw InputError("The scene '" + file + "' has no " + what + " '" + name +
+                       "'. Fix: use one of: " + valid + ".");
     }
     return i;
   }
@@ -122,22 +122,22 @@ namespace softgrasp
   {
     switch (type)
     {
-      case mjGEOM_PLANE:
-        return "plane";
-      case mjGEOM_SPHERE:
-        return "sphere";
-      case mjGEOM_CAPSULE:
-        return "capsule";
-      case mjGEOM_ELLIPSOID:
-        return "ellipsoid";
-      case mjGEOM_CYLINDER:
-        return "cylinder";
-      case mjGEOM_BOX:
-        return "box";
-      case mjGEOM_MESH:
-        return "mesh";
-      default:
-        return "hfield";
+    case mjGEOM_PLANE:
+      return "plane";
+    case mjGEOM_SPHERE:
+      return "sphere";
+    case mjGEOM_CAPSULE:
+      return "capsule";
+    case mjGEOM_ELLIPSOID:
+      return "ellipsoid";
+    case mjGEOM_CYLINDER:
+      return "cylinder";
+    case mjGEOM_BOX:
+      return "box";
+    case mjGEOM_MESH:
+      return "mesh";
+    default:
+      return "hfield";
     }
   }
 } // namespace softgrasp

@@ -18,13 +18,13 @@ namespace softgrasp
    * @p hidden_boundaries (e.g. a rigid core) are left out. Collective; the
    * files are written on rank 0. Lengths drawn in mm.
    */
-  void write_grasp_picture(const SolidSystem<3>      &system,
-                           const KinematicsData      &kinematics,
-                           const double               time,
+  void write_grasp_picture(const SolidSystem<3>            &system,
+                           const KinematicsData            &kinematics,
+                           const double                     time,
                            const std::vector<unsigned int> &hidden_boundaries,
-                           const std::string         &directory,
-                           const std::string         &base,
-                           std::ostream              &log);
+                           const std::string               &directory,
+                           const std::string               &base,
+                           std::ostream                    &log);
 
   /**
    * PNG plot (gnuplot) of force against closure per link from the table

@@ -58,10 +58,10 @@ namespace softgrasp
       double       closure     = 0; ///< rad reached
       bool         target_met  = false;
       unsigned int steps       = 0;
-      double       balance     = 0; ///< |sum F_links - R| / max |F_link|
-      double       penetration = 0; ///< deepest nodal gap violation (m)
-      std::vector<std::string> links;        ///< body/geom in contact
-      std::vector<double>      normal_fe;    ///< N, final, per link
+      double       balance     = 0;       ///< |sum F_links - R| / max |F_link|
+      double       penetration = 0;       ///< deepest nodal gap violation (m)
+      std::vector<std::string> links;     ///< body/geom in contact
+      std::vector<double>      normal_fe; ///< N, final, per link
       std::vector<double>      normal_rigid; ///< N, MuJoCo, same closure
     };
     const Summary &summary() const;
@@ -77,7 +77,7 @@ namespace softgrasp
     dealii::ParameterHandler &prm;
     std::string               file_name;
     std::string               target_link;
-    double                    target_force = 0; ///< N; 0: none
+    double                    target_force  = 0; ///< N; 0: none
     bool                      make_pictures = true;
     bool                      run_rigid     = true;
     double                    extra_angle   = 0;

@@ -42,7 +42,7 @@ namespace softgrasp
     struct LinkForce
     {
       std::string     body, geom;
-      Eigen::Vector3d force  = Eigen::Vector3d::Zero(); ///< world (N)
+      Eigen::Vector3d force = Eigen::Vector3d::Zero(); ///< world (N)
       /// Unit contact normal, world, from the link into the object: the
       /// link's outward surface normal (1).
       Eigen::Vector3d normal = Eigen::Vector3d::Zero();

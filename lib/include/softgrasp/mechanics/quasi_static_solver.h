@@ -115,7 +115,7 @@ namespace softgrasp
     RunState                                          state;
     std::vector<dealii::Point<dim>>                   monitor_points;
     std::function<bool()>                             stop_criterion;
-    bool         stopped                = false;
+    bool                                              stopped = false;
     unsigned int last_output_step       = static_cast<unsigned int>(-1);
     unsigned int last_newton_iterations = 0;
     unsigned int last_linear_iterations = 0;

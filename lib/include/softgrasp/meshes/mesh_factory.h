@@ -54,7 +54,7 @@ namespace softgrasp
     double       thickness         = 1e-3; ///< m, 3D only
     unsigned int layers            = 1;
     // ball
-    dealii::Point<dim> center;        ///< m
+    dealii::Point<dim> center;             ///< m
     double             radius      = 0.04; ///< m
     double             core_radius = 0;    ///< m; > 0: shell on a core
     unsigned int       shell_cells = 6;

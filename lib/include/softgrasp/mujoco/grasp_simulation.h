@@ -52,6 +52,8 @@ namespace softgrasp
     /// Step until at rest with settled forces, at most @p max_time (s).
     bool settle(const double max_time, const bool require_links);
     bool touches_object(const int body) const;
+    /// The joint of the fastest degree of freedom (for messages).
+    std::string              fastest_joint() const;
     std::vector<std::string> missing_links() const;
     void                     set_target(const int joint, const double value);
     /// Append a sample: poses from @p pose_data, forces from the simulation.

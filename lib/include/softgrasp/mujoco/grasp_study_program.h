@@ -29,7 +29,7 @@ namespace softgrasp
   {
     std::string default_parameter_file;
     /// Run the rigid stage only (write the kinematics file and stop).
-    bool rigid_only = false;
+    bool                                          rigid_only = false;
     std::function<void(const IndentationStudy &)> report;
 
     int run(int argc, char **argv) const;

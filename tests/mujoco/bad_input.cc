@@ -1,0 +1,91 @@
+// Bad input to the MuJoCo bridge gives an InputError that names the cause
+// and the fix: a missing or malformed MJCF scene, an unknown joint (listing
+// the valid ones), a solref time constant MuJoCo 2.2 would clamp silently,
+// and an actuator target outside its ctrlrange (clamped silently by MuJoCo).
+#include "../tests.h"
+#include "grasp_helpers.h"
+
+#include <fstream>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/mujoco/grasp_simulation.h>
+
+using namespace softgrasp;
+
+namespace
+{
+  template <typename F>
+  void expect_error(const std::string              &what,
+                    F                               f,
+                    const std::vector<std::string> &needles)
+  {
+    std::string message = "no error";
+    try
+    {
+      f();
+    }
+    catch (const InputError &e)
+    {
+      message = e.what();
+    }
+    bool found = message.find("Fix:") != std::string::npos;
+    for (const auto &n : needles)
+      found = found && message.find(n) != std::string::npos;
+    dealii::deallog << what << ": clear error " << found << std::endl;
+    if (!found)
+      std::cerr << message << std::endl;
+    SG_CHECK(found, what);
+  }
+} // namespace
+
+int
+main()
+{
+  softgrasp_tests::initlog();
+  dealii::ParameterHandler prm;
+  softgrasp_tests::read_sphere_squeeze(prm);
+  const auto         good = softgrasp_tests::sphere_grasp_parameters(prm);
+  std::ostringstream log;
+
+  expect_error("missing scene",
+               [] { MujocoModel model("no-such-scene.xml"); },
+               {"no-such-scene.xml", "Cannot open"});
+  std::ofstream("malformed.xml") << "<mujoco><worldbody><body>\n</mujoco>\n";
+  expect_error("malformed scene",
+               [] { MujocoModel model("malformed.xml"); },
+               {"malformed.xml", "MuJoCo could not load"});
+
+  auto unknown          = good;
+  unknown.finger_joints = {"thumb_proximal_joint", "index_joint"};
+  expect_error("unknown joint",
+               [&] { GraspSimulation simulation(unknown, log); },
+               {"'index_joint'", "thumb_distal_joint"});
+
+  std::ifstream      in(good.scene_file);
+  std::ostringstream scene;
+  scene << in.rdbuf();
+  std::string text = scene.str();
+  text.replace(text.find("timestep=\"0.001\""), 16, "timestep=\"0.005\"");
+  auto coarse       = good;
+  coarse.scene_file = "coarse_scene.xml";
+  { // the scene includes the hand relative to its own directory
+    std::ifstream      hand_in(std::string(PARAMETER_FILES) +
+                          "/mjcf/three_finger_hand.xml");
+    std::ostringstream hand;
+    hand << hand_in.rdbuf();
+    std::ofstream("three_finger_hand.xml") << hand.str();
+    std::ofstream("coarse_scene.xml") << text;
+  }
+  expect_error("solref under two time steps",
+               [&] { GraspSimulation simulation(coarse, log); },
+               {"solref", "0.004"});
+
+  auto tight = good;
+  tight.grip = 2.0;
+  expect_error("target outside ctrlrange",
+               [&]
+               {
+                 GraspSimulation simulation(tight, log);
+                 simulation.run();
+               },
+               {"ctrlrange", "'Grip'"});
+}
