@@ -14,3 +14,9 @@ echo "wrote doc/parameters/quasi_static_solver.prm"
   "$root/examples/hertz_indentation/hertz_indentation.prm" \
   > "$root/doc/parameters/contact_hertz_indentation.prm"
 echo "wrote doc/parameters/contact_hertz_indentation.prm (all entries of a run with rigid bodies and contact)"
+if [ -x "$root/build/studies/sphere_squeeze/sphere_squeeze" ]; then
+  (cd "$root/build/studies/sphere_squeeze" &&
+    ./sphere_squeeze --print-parameters sphere_squeeze.prm) \
+    > "$root/doc/parameters/sphere_squeeze.prm"
+  echo "wrote doc/parameters/sphere_squeeze.prm (the sphere_squeeze study: rigid environment, indentation study and solver)"
+fi

@@ -25,7 +25,7 @@ namespace softgrasp
                         Patterns::Anything(),
                         "Body of the hand's base (palm) in the scene.");
       prm.declare_entry("Base position",
-                        "0, 0, 0.06",
+                        "0, 0, 0.052",
                         Patterns::List(Patterns::Double(), 3, 3),
                         "World position of the hand base. Unit: m.");
       prm.declare_entry("Base orientation",
