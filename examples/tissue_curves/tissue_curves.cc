@@ -35,6 +35,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <softgrasp/base/gnuplot.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/materials/homogeneous_loading.h>
 #include <softgrasp/materials/material_library.h>
@@ -185,13 +186,7 @@ plot_curves(const std::vector<std::shared_ptr<const Material>> &materials,
     gp << "\n";
   }
   gp.close();
-  const std::string command =
-      "cd '" + dir.string() + "' && gnuplot tissue_curves.gnuplot 2>/dev/null";
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
-    std::cout << "gnuplot not found: plots skipped (the CSV file is there).\n";
-  else if (std::system(command.c_str()) != 0)
-    std::cout << "gnuplot failed: plots skipped (the CSV file is there).\n";
-  else
+  if (softgrasp::run_gnuplot(dir.string(), "tissue_curves.gnuplot", std::cout))
     std::cout << "Plots: " << (dir / "uniaxial.png").string() << ", "
               << (dir / "equibiaxial.png").string() << "\n";
 }

@@ -5,6 +5,7 @@
 #include <softgrasp/base/atomic_file.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/io/kinematics_file.h>
+#include <tuple>
 
 namespace softgrasp
 {
@@ -247,6 +248,17 @@ namespace softgrasp
                      "' at row " + std::to_string(i / columns),
                  "check the simulation that wrote it");
         return values;
+      }
+
+      /// "body/geom" split into body and geom.
+      std::pair<std::string, std::string>
+      link_parts(const std::string &link, const std::string &where) const
+      {
+        const auto slash = link.find('/');
+        if (slash == std::string::npos)
+          fail("lists the link '" + link + "' in '" + where + "'",
+               "name links as body/geom");
+        return {link.substr(0, slash), link.substr(slash + 1)};
       }
 
       std::vector<Pose>
@@ -562,15 +574,10 @@ namespace softgrasp
     for (const auto &link : names_of(
              reader.string_attribute(equilibrium, "links", "/equilibrium")))
     {
-      const auto slash = link.find('/');
-      if (slash == std::string::npos)
-        reader.fail("lists the link '" + link + "' in '/equilibrium'",
-                    "name links as body/geom");
       const std::string         path  = "/equilibrium/" + link;
       Handle                    group = reader.open_group(equilibrium, link);
       KinematicsData::LinkForce f;
-      f.body           = link.substr(0, slash);
-      f.geom           = link.substr(slash + 1);
+      std::tie(f.body, f.geom) = reader.link_parts(link, "/equilibrium");
       const auto force = reader.dataset(group, "force", path + "/force", 3, 1);
       const auto normal =
           reader.dataset(group, "normal", path + "/normal", 3, 1);
@@ -583,15 +590,10 @@ namespace softgrasp
     for (const auto &link :
          names_of(reader.string_attribute(histories, "links", "/link_forces")))
     {
-      const auto slash = link.find('/');
-      if (slash == std::string::npos)
-        reader.fail("lists the link '" + link + "' in '/link_forces'",
-                    "name links as body/geom");
       const std::string           path  = "/link_forces/" + link;
       Handle                      group = reader.open_group(histories, link);
       KinematicsData::LinkHistory h;
-      h.body = link.substr(0, slash);
-      h.geom = link.substr(slash + 1);
+      std::tie(h.body, h.geom) = reader.link_parts(link, "/link_forces");
       h.force =
           vectors_of(reader.dataset(group, "force", path + "/force", n, 3));
       h.normal_force = vectors_of(
