@@ -67,6 +67,56 @@ namespace softgrasp
           response.tangent, F);
   }
 
+  namespace
+  {
+    /// S = J U' C^{-1} + 2 f (X - (X:C)/3 C^{-1}), for double and batches.
+    template <typename Number>
+    SymmetricTensor<2, 3, Number>
+    decoupled_stress(const Number                        &J,
+                     const Number                        &dU,
+                     const Number                        &f,
+                     const SymmetricTensor<2, 3, Number> &Cinv,
+                     const SymmetricTensor<2, 3, Number> &X,
+                     const Number                        &XC)
+    {
+      return J * dU * Cinv + 2.0 * f * (X - (XC / 3.0) * Cinv);
+    }
+  } // namespace
+
+  void Material::first_piola_batch(const Tensor<2, 3, VectorizedDouble> &F,
+                                   const StructuralDirections     *directions,
+                                   const unsigned int              n_lanes,
+                                   Tensor<2, 3, VectorizedDouble> &P,
+                                   VectorizedDouble               &energy) const
+  {
+    const VectorizedDouble                        J = determinant(F);
+    const SymmetricTensor<2, 3, VectorizedDouble> C =
+        symmetrize(transpose(F) * F);
+    const SymmetricTensor<2, 3, VectorizedDouble> Cinv = invert(C);
+    const VectorizedDouble                        f = std::pow(J, -2.0 / 3.0);
+
+    VectorizedDouble                        W_iso;
+    SymmetricTensor<2, 3, VectorizedDouble> X;
+    model->evaluate_batch(f * C, directions, n_lanes, W_iso, X);
+    VectorizedDouble U = 0, dU = 0; // volumetric: scalar per lane
+    for (unsigned int lane = 0; lane < n_lanes; ++lane)
+    {
+      U[lane]  = volumetric.energy(J[lane]);
+      dU[lane] = volumetric.first_derivative(J[lane]);
+    }
+    const SymmetricTensor<2, 3, VectorizedDouble> S =
+        decoupled_stress(J, dU, f, Cinv, X, VectorizedDouble(X * C));
+    P      = F * Tensor<2, 3, VectorizedDouble>(S);
+    energy = U + W_iso;
+    for (unsigned int lane = n_lanes; lane < VectorizedDouble::size(); ++lane)
+    {
+      energy[lane] = 0;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          P[i][j][lane] = 0;
+    }
+  }
+
   void Material::evaluate_decoupled(const Tensor<2, 3>         &F,
                                     const StructuralDirections &directions,
                                     const bool                  with_tangent,
@@ -92,7 +142,7 @@ namespace softgrasp
         given_pressure ? pressure : volumetric.first_derivative(J);
     response.energy =
         given_pressure ? iso.energy : volumetric.energy(J) + iso.energy;
-    response.stress = J * dU * Cinv + 2.0 * f * (X - (XC / 3.0) * Cinv);
+    response.stress = decoupled_stress(J, dU, f, Cinv, X, XC);
     if (!with_tangent)
       return;
 
