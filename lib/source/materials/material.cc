@@ -89,11 +89,17 @@ namespace softgrasp
                                    Tensor<2, 3, VectorizedDouble> &P,
                                    VectorizedDouble               &energy) const
   {
+    // P = F S with S from decoupled_stress(), written with
+    // F C^{-1} = F^{-T} = cof(F) / J: no inverse of C, no product F S.
     const VectorizedDouble                        J = determinant(F);
     const SymmetricTensor<2, 3, VectorizedDouble> C =
         symmetrize(transpose(F) * F);
-    const SymmetricTensor<2, 3, VectorizedDouble> Cinv = invert(C);
-    const VectorizedDouble                        f = std::pow(J, -2.0 / 3.0);
+    VectorizedDouble f; // J^{-2/3}
+    for (unsigned int lane = 0; lane < VectorizedDouble::size(); ++lane)
+    {
+      const double c = std::cbrt(J[lane]);
+      f[lane]        = 1.0 / (c * c);
+    }
 
     VectorizedDouble                        W_iso;
     SymmetricTensor<2, 3, VectorizedDouble> X;
@@ -104,9 +110,9 @@ namespace softgrasp
       U[lane]  = volumetric.energy(J[lane]);
       dU[lane] = volumetric.first_derivative(J[lane]);
     }
-    const SymmetricTensor<2, 3, VectorizedDouble> S =
-        decoupled_stress(J, dU, f, Cinv, X, VectorizedDouble(X * C));
-    P      = F * Tensor<2, 3, VectorizedDouble>(S);
+    const VectorizedDouble XC = X * C;
+    const VectorizedDouble a  = (J * dU - (2.0 / 3.0) * f * XC) / J;
+    P = a * cofactor(F) + (2.0 * f) * (F * Tensor<2, 3, VectorizedDouble>(X));
     energy = U + W_iso;
     for (unsigned int lane = n_lanes; lane < VectorizedDouble::size(); ++lane)
     {
