@@ -44,6 +44,32 @@ namespace
     state.SetItemsProcessed(state.iterations());
   }
 
+  /// First Piola stress of a SIMD batch (the explicit solver's kernel);
+  /// items are points, i.e. lanes.
+  void run_batch(benchmark::State &state, const std::string &fragment)
+  {
+    const auto material =
+        MaterialLibrary::create_from_fragment(fragment, "benchmark");
+    constexpr unsigned int                  width = VectorizedDouble::size();
+    const std::vector<StructuralDirections> d(
+        width, material->structural_directions(Point<3>()));
+    const Tensor<2, 3>             F1 = deformation();
+    Tensor<2, 3, VectorizedDouble> F;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        for (unsigned int lane = 0; lane < width; ++lane)
+          F[i][j][lane] = F1[i][j] * (1.0 + 1e-3 * lane);
+    Tensor<2, 3, VectorizedDouble> P;
+    VectorizedDouble               energy;
+    for (auto _ : state)
+    {
+      material->first_piola_batch(F, d.data(), width, P, energy);
+      benchmark::DoNotOptimize(P);
+      benchmark::DoNotOptimize(energy);
+    }
+    state.SetItemsProcessed(state.iterations() * width);
+  }
+
   const std::vector<std::pair<std::string, std::string>> models = {
       {"neo-Hookean",
        std::string("set Model = neo-Hookean\n") + vol +
@@ -80,6 +106,8 @@ namespace
           ("stress+tangent/" + name).c_str(), run, fragment, true);
       benchmark::RegisterBenchmark(
           ("stress/" + name).c_str(), run, fragment, false);
+      benchmark::RegisterBenchmark(
+          ("first-Piola-batch/" + name).c_str(), run_batch, fragment);
     }
     return true;
   }();

@@ -12,7 +12,7 @@ namespace softgrasp
     const SymmetricTensor<2, 3> I  = unit_symmetric_tensor<3>();
     const double                I1 = trace(Cbar);
     const double                I2 = 0.5 * (I1 * I1 - Cbar * Cbar);
-    const Derivatives           d  = invariant_derivatives(I1, I2);
+    const Derivatives<double>   d  = invariant_derivatives(I1, I2);
 
     const SymmetricTensor<2, 3> g2 = I1 * I - Cbar;
     response.energy                = d.W;
@@ -23,5 +23,20 @@ namespace softgrasp
           d.W12 * (outer_product(I, g2) + outer_product(g2, I)) +
           d.W22 * outer_product(g2, g2) +
           d.W2 * (outer_product(I, I) - identity_tensor<3>());
+  }
+
+  void InvariantModel::evaluate_batch(
+      const SymmetricTensor<2, 3, VectorizedDouble> &Cbar,
+      const StructuralDirections *,
+      const unsigned int,
+      VectorizedDouble                        &energy,
+      SymmetricTensor<2, 3, VectorizedDouble> &first_derivative) const
+  {
+    const auto             I  = unit_symmetric_tensor<3, VectorizedDouble>();
+    const VectorizedDouble I1 = trace(Cbar);
+    const VectorizedDouble I2 = 0.5 * (I1 * I1 - Cbar * Cbar);
+    const auto             d  = invariant_derivatives(I1, I2);
+    energy                    = d.W;
+    first_derivative          = d.W1 * I + d.W2 * (I1 * I - Cbar);
   }
 } // namespace softgrasp

@@ -12,4 +12,28 @@ namespace softgrasp
   {
     return StructuralDirections();
   }
+
+  void IsochoricModel::evaluate_batch(
+      const dealii::SymmetricTensor<2, 3, VectorizedDouble> &Cbar,
+      const StructuralDirections                            *directions,
+      const unsigned int                                     n_lanes,
+      VectorizedDouble                                      &energy,
+      dealii::SymmetricTensor<2, 3, VectorizedDouble> &first_derivative) const
+  {
+    energy           = 0;
+    first_derivative = dealii::SymmetricTensor<2, 3, VectorizedDouble>();
+    Response response;
+    for (unsigned int lane = 0; lane < n_lanes; ++lane)
+    {
+      dealii::SymmetricTensor<2, 3> C;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i; j < 3; ++j)
+          C[i][j] = Cbar[i][j][lane];
+      evaluate(C, directions[lane], false, response);
+      energy[lane] = response.energy;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i; j < 3; ++j)
+          first_derivative[i][j][lane] = response.first_derivative[i][j];
+    }
+  }
 } // namespace softgrasp

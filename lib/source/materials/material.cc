@@ -67,6 +67,62 @@ namespace softgrasp
           response.tangent, F);
   }
 
+  namespace
+  {
+    /// S = J U' C^{-1} + 2 f (X - (X:C)/3 C^{-1}), for double and batches.
+    template <typename Number>
+    SymmetricTensor<2, 3, Number>
+    decoupled_stress(const Number                        &J,
+                     const Number                        &dU,
+                     const Number                        &f,
+                     const SymmetricTensor<2, 3, Number> &Cinv,
+                     const SymmetricTensor<2, 3, Number> &X,
+                     const Number                        &XC)
+    {
+      return J * dU * Cinv + 2.0 * f * (X - (XC / 3.0) * Cinv);
+    }
+  } // namespace
+
+  void Material::first_piola_batch(const Tensor<2, 3, VectorizedDouble> &F,
+                                   const StructuralDirections     *directions,
+                                   const unsigned int              n_lanes,
+                                   Tensor<2, 3, VectorizedDouble> &P,
+                                   VectorizedDouble               &energy) const
+  {
+    // P = F S with S from decoupled_stress(), written with
+    // F C^{-1} = F^{-T} = cof(F) / J: no inverse of C, no product F S.
+    const VectorizedDouble                        J = determinant(F);
+    const SymmetricTensor<2, 3, VectorizedDouble> C =
+        symmetrize(transpose(F) * F);
+    VectorizedDouble f; // J^{-2/3}
+    for (unsigned int lane = 0; lane < VectorizedDouble::size(); ++lane)
+    {
+      const double c = std::cbrt(J[lane]);
+      f[lane]        = 1.0 / (c * c);
+    }
+
+    VectorizedDouble                        W_iso;
+    SymmetricTensor<2, 3, VectorizedDouble> X;
+    model->evaluate_batch(f * C, directions, n_lanes, W_iso, X);
+    VectorizedDouble U = 0, dU = 0; // volumetric: scalar per lane
+    for (unsigned int lane = 0; lane < n_lanes; ++lane)
+    {
+      U[lane]  = volumetric.energy(J[lane]);
+      dU[lane] = volumetric.first_derivative(J[lane]);
+    }
+    const VectorizedDouble XC = X * C;
+    const VectorizedDouble a  = (J * dU - (2.0 / 3.0) * f * XC) / J;
+    P = a * cofactor(F) + (2.0 * f) * (F * Tensor<2, 3, VectorizedDouble>(X));
+    energy = U + W_iso;
+    for (unsigned int lane = n_lanes; lane < VectorizedDouble::size(); ++lane)
+    {
+      energy[lane] = 0;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          P[i][j][lane] = 0;
+    }
+  }
+
   void Material::evaluate_decoupled(const Tensor<2, 3>         &F,
                                     const StructuralDirections &directions,
                                     const bool                  with_tangent,
@@ -92,7 +148,7 @@ namespace softgrasp
         given_pressure ? pressure : volumetric.first_derivative(J);
     response.energy =
         given_pressure ? iso.energy : volumetric.energy(J) + iso.energy;
-    response.stress = J * dU * Cinv + 2.0 * f * (X - (XC / 3.0) * Cinv);
+    response.stress = decoupled_stress(J, dU, f, Cinv, X, XC);
     if (!with_tangent)
       return;
 

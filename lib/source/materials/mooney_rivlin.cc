@@ -30,15 +30,22 @@ namespace softgrasp
            " Pa, C01 = " + std::to_string(c01) + " Pa";
   }
 
-  InvariantModel::Derivatives
-  MooneyRivlin::invariant_derivatives(const double I1, const double I2) const
+  template <typename Number>
+  InvariantModel::Derivatives<Number>
+  MooneyRivlin::derivatives(const Number &I1, const Number &I2) const
   {
-    Derivatives d;
+    Derivatives<Number> d;
     d.W  = c10 * (I1 - 3.0) + c01 * (I2 - 3.0);
     d.W1 = c10;
     d.W2 = c01;
     return d;
   }
+
+  template InvariantModel::Derivatives<double>
+  MooneyRivlin::derivatives(const double &, const double &) const;
+  template InvariantModel::Derivatives<VectorizedDouble>
+  MooneyRivlin::derivatives(const VectorizedDouble &,
+                            const VectorizedDouble &) const;
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(
       MooneyRivlin,

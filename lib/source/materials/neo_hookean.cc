@@ -27,14 +27,21 @@ namespace softgrasp
     return "neo-Hookean, mu = " + std::to_string(mu) + " Pa";
   }
 
-  InvariantModel::Derivatives
-  NeoHookean::invariant_derivatives(const double I1, const double) const
+  template <typename Number>
+  InvariantModel::Derivatives<Number>
+  NeoHookean::derivatives(const Number &I1, const Number &) const
   {
-    Derivatives d;
+    Derivatives<Number> d;
     d.W  = 0.5 * mu * (I1 - 3.0);
     d.W1 = 0.5 * mu;
     return d;
   }
+
+  template InvariantModel::Derivatives<double>
+  NeoHookean::derivatives(const double &, const double &) const;
+  template InvariantModel::Derivatives<VectorizedDouble>
+  NeoHookean::derivatives(const VectorizedDouble &,
+                          const VectorizedDouble &) const;
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(NeoHookean,
                                      "neo-Hookean",

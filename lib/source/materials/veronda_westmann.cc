@@ -31,17 +31,24 @@ namespace softgrasp
            " Pa, C2 = " + std::to_string(c2);
   }
 
-  InvariantModel::Derivatives
-  VerondaWestmann::invariant_derivatives(const double I1, const double I2) const
+  template <typename Number>
+  InvariantModel::Derivatives<Number>
+  VerondaWestmann::derivatives(const Number &I1, const Number &I2) const
   {
-    Derivatives  d;
-    const double e = std::exp(c2 * (I1 - 3.0));
-    d.W            = c1 * (e - 1.0) - 0.5 * c1 * c2 * (I2 - 3.0);
-    d.W1           = c1 * c2 * e;
-    d.W2           = -0.5 * c1 * c2;
-    d.W11          = c1 * c2 * c2 * e;
+    Derivatives<Number> d;
+    const Number        e = std::exp(c2 * (I1 - 3.0));
+    d.W                   = c1 * (e - 1.0) - 0.5 * c1 * c2 * (I2 - 3.0);
+    d.W1                  = c1 * c2 * e;
+    d.W2                  = -0.5 * c1 * c2;
+    d.W11                 = c1 * c2 * c2 * e;
     return d;
   }
+
+  template InvariantModel::Derivatives<double>
+  VerondaWestmann::derivatives(const double &, const double &) const;
+  template InvariantModel::Derivatives<VectorizedDouble>
+  VerondaWestmann::derivatives(const VectorizedDouble &,
+                               const VectorizedDouble &) const;
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(
       VerondaWestmann,

@@ -40,21 +40,27 @@ namespace softgrasp
     return out + " Pa";
   }
 
-  InvariantModel::Derivatives Yeoh::invariant_derivatives(const double I1,
-                                                          const double) const
+  template <typename Number>
+  InvariantModel::Derivatives<Number> Yeoh::derivatives(const Number &I1,
+                                                        const Number &) const
   {
-    Derivatives  d;
-    const double x = I1 - 3.0;
+    Derivatives<Number> d;
+    const Number        x = I1 - 3.0;
     for (unsigned int i = 1; i <= coefficients.size(); ++i)
     {
       const double c = coefficients[i - 1];
-      d.W += c * std::pow(x, i);
+      d.W += c * std::pow(x, double(i));
       d.W1 += c * i * std::pow(x, i - 1.0);
       if (i >= 2)
         d.W11 += c * i * (i - 1.0) * std::pow(x, i - 2.0);
     }
     return d;
   }
+
+  template InvariantModel::Derivatives<double>
+  Yeoh::derivatives(const double &, const double &) const;
+  template InvariantModel::Derivatives<VectorizedDouble>
+  Yeoh::derivatives(const VectorizedDouble &, const VectorizedDouble &) const;
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(Yeoh,
                                      "Yeoh",

@@ -12,11 +12,12 @@ namespace softgrasp
    */
   namespace PlaneStrain
   {
-    template <int dim>
-    inline dealii::Tensor<2, 3> to_3d(const dealii::Tensor<2, dim> &F)
+    template <int dim, typename Number>
+    inline dealii::Tensor<2, 3, Number>
+    to_3d(const dealii::Tensor<2, dim, Number> &F)
     {
       static_assert(dim == 2 || dim == 3, "dim must be 2 or 3");
-      dealii::Tensor<2, 3> F3;
+      dealii::Tensor<2, 3, Number> F3;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           F3[i][j] = F[i][j];

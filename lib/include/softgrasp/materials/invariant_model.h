@@ -10,15 +10,18 @@ namespace softgrasp
    * I1bar = tr Cbar and I2bar = (I1bar^2 - tr Cbar^2)/2. A derived class
    * gives W(I1bar, I2bar) and its first and second partial derivatives;
    * this class assembles dPsi/dCbar and d2Psi/dCbar2 from
-   *   dI1/dCbar = I,  dI2/dCbar = I1 I - Cbar,  d2I2/dCbar2 = I(x)I - II.
+   *   dI1/dCbar = I,  dI2/dCbar = I1 I - Cbar,  d2I2/dCbar2 = I(x)I - II,
+   * for single points (evaluate()) and for SIMD batches (evaluate_batch()).
+   * Derive through InvariantModelImplementation, which takes one templated
+   * formula for both.
    */
   class InvariantModel : public IsochoricModel
   {
   public:
     /// W and its partial derivatives with respect to I1bar and I2bar.
-    struct Derivatives
+    template <typename Number> struct Derivatives
     {
-      double W = 0, W1 = 0, W2 = 0, W11 = 0, W12 = 0, W22 = 0;
+      Number W = 0, W1 = 0, W2 = 0, W11 = 0, W12 = 0, W22 = 0;
     };
 
     void evaluate(const dealii::SymmetricTensor<2, 3> &Cbar,
@@ -26,9 +29,45 @@ namespace softgrasp
                   const bool                           with_second_derivative,
                   Response                            &response) const final;
 
+    void
+    evaluate_batch(const dealii::SymmetricTensor<2, 3, VectorizedDouble> &Cbar,
+                   const StructuralDirections *directions,
+                   const unsigned int          n_lanes,
+                   VectorizedDouble           &energy,
+                   dealii::SymmetricTensor<2, 3, VectorizedDouble>
+                       &first_derivative) const final;
+
   protected:
-    virtual Derivatives invariant_derivatives(const double I1,
-                                              const double I2) const = 0;
+    virtual Derivatives<double>
+    invariant_derivatives(const double &I1, const double &I2) const = 0;
+    virtual Derivatives<VectorizedDouble>
+    invariant_derivatives(const VectorizedDouble &I1,
+                          const VectorizedDouble &I2) const = 0;
+  };
+
+  /**
+   * An invariant model from one formula: @p Model defines
+   *   template <typename Number>
+   *   Derivatives<Number> derivatives(const Number &I1, const Number &I2)
+   * const; for double and VectorizedDouble, and this class makes both virtual
+   * overrides of it (curiously recurring template pattern).
+   */
+  template <typename Model>
+  class InvariantModelImplementation : public InvariantModel
+  {
+  protected:
+    Derivatives<double> invariant_derivatives(const double &I1,
+                                              const double &I2) const final
+    {
+      return static_cast<const Model &>(*this).derivatives(I1, I2);
+    }
+
+    Derivatives<VectorizedDouble>
+    invariant_derivatives(const VectorizedDouble &I1,
+                          const VectorizedDouble &I2) const final
+    {
+      return static_cast<const Model &>(*this).derivatives(I1, I2);
+    }
   };
 } // namespace softgrasp
 

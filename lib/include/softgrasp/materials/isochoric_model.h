@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/vectorization.h>
 #include <softgrasp/base/plugin_registry.h>
 #include <string>
 
@@ -33,6 +34,9 @@ namespace softgrasp
    *
    * Units: energies in J/m^3 = Pa; parameters in SI units.
    */
+  /// A batch of values, one per SIMD lane (points of several cells).
+  using VectorizedDouble = dealii::VectorizedArray<double>;
+
   class IsochoricModel
   {
   public:
@@ -56,6 +60,23 @@ namespace softgrasp
                           Response  &response) const = 0;
 
     /// The small-strain shear modulus mu_0 (Pa).
+    /**
+     * W and dW/dCbar for a batch of points, one per lane of the vectorized
+     * arguments (the explicit solver's matrix-free internal forces). Lanes
+     * from @p n_lanes on are padding and must hold a valid Cbar (e.g. the
+     * identity). @p directions has one entry per lane (n_lanes of them) for
+     * anisotropic models. The default evaluates lane by lane with
+     * evaluate(); models with a vectorizable formula override it, from the
+     * same implementation as evaluate().
+     */
+    virtual void
+    evaluate_batch(const dealii::SymmetricTensor<2, 3, VectorizedDouble> &Cbar,
+                   const StructuralDirections *directions,
+                   const unsigned int          n_lanes,
+                   VectorizedDouble           &energy,
+                   dealii::SymmetricTensor<2, 3, VectorizedDouble>
+                       &first_derivative) const;
+
     virtual double initial_shear_modulus() const = 0;
 
     /// Read the model's parameters; @p path names the subsection in errors.

@@ -89,6 +89,21 @@ namespace softgrasp
                           const bool                  with_tangent,
                           Response                   &response) const;
 
+    /**
+     * First Piola-Kirchhoff stress P = F S (Pa) and the energy Psi (Pa) for
+     * a batch of deformation gradients, one per SIMD lane: the stress of
+     * the explicit solver's matrix-free internal forces, from the same
+     * formulas as evaluate_material(). Every lane below @p n_lanes must
+     * have det F > 0 (check before); the padding lanes from @p n_lanes on
+     * must hold a valid F (e.g. the identity) and give P = 0 there.
+     * @p directions holds n_lanes entries.
+     */
+    void first_piola_batch(const dealii::Tensor<2, 3, VectorizedDouble> &F,
+                           const StructuralDirections             *directions,
+                           const unsigned int                      n_lanes,
+                           dealii::Tensor<2, 3, VectorizedDouble> &P,
+                           VectorizedDouble &energy) const;
+
     /// Psi(F) (Pa).
     double strain_energy(const dealii::Tensor<2, 3> &F,
                          const StructuralDirections &directions) const;

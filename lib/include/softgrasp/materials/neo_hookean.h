@@ -10,7 +10,7 @@ namespace softgrasp
    *   Psi_iso = mu/2 (I1bar - 3).
    * Parameter: "Shear modulus" mu > 0 (Pa).
    */
-  class NeoHookean : public InvariantModel
+  class NeoHookean : public InvariantModelImplementation<NeoHookean>
   {
   public:
     static void declare_parameters(dealii::ParameterHandler &prm);
@@ -19,9 +19,10 @@ namespace softgrasp
     double      initial_shear_modulus() const override;
     std::string summary() const override;
 
-  protected:
-    Derivatives invariant_derivatives(const double I1,
-                                      const double I2) const override;
+    /// W(I1bar, I2bar) and its partial derivatives, for double and
+    /// VectorizedDouble.
+    template <typename Number>
+    Derivatives<Number> derivatives(const Number &I1, const Number &I2) const;
 
   private:
     double mu = 0; ///< shear modulus (Pa)

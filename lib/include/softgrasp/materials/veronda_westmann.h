@@ -11,7 +11,7 @@ namespace softgrasp
    * small-strain shear modulus mu_0 = C1 C2.
    * Parameters: "C1" > 0 (Pa), "C2" > 0 (dimensionless).
    */
-  class VerondaWestmann : public InvariantModel
+  class VerondaWestmann : public InvariantModelImplementation<VerondaWestmann>
   {
   public:
     static void declare_parameters(dealii::ParameterHandler &prm);
@@ -20,9 +20,10 @@ namespace softgrasp
     double      initial_shear_modulus() const override;
     std::string summary() const override;
 
-  protected:
-    Derivatives invariant_derivatives(const double I1,
-                                      const double I2) const override;
+    /// W(I1bar, I2bar) and its partial derivatives, for double and
+    /// VectorizedDouble.
+    template <typename Number>
+    Derivatives<Number> derivatives(const Number &I1, const Number &I2) const;
 
   private:
     double c1 = 0; ///< Pa

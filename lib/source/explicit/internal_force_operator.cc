@@ -1,0 +1,178 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/base/plane_strain.h>
+#include <softgrasp/explicit/internal_force_operator.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  namespace
+  {
+    template <int dim>
+    bool has_anisotropic_material(const MaterialLibrary &materials)
+    {
+      for (const auto id : materials.material_ids())
+        if (materials.get(id).isochoric_model().n_structural_directions() > 0)
+          return true;
+      return false;
+    }
+
+    /// The structural directions at every quadrature point of every batch.
+    template <int dim, int degree>
+    std::vector<StructuralDirections>
+    directions_at_points(const MatrixFree<dim, double> &data,
+                         const MaterialLibrary         &materials)
+    {
+      constexpr unsigned int width = VectorizedDouble::size();
+      FEEvaluation<dim, degree, degree + 1, dim, double> phi(data);
+      std::vector<StructuralDirections> result(data.n_cell_batches() *
+                                               phi.n_q_points * width);
+      for (unsigned int cell = 0; cell < data.n_cell_batches(); ++cell)
+      {
+        phi.reinit(cell);
+        const Material &material =
+            materials.get(data.get_cell_iterator(cell, 0)->material_id());
+        for (unsigned int q = 0; q < phi.n_q_points; ++q)
+        {
+          const auto x = phi.quadrature_point(q);
+          for (unsigned int lane = 0;
+               lane < data.n_active_entries_per_cell_batch(cell);
+               ++lane)
+          {
+            Point<dim> p;
+            for (unsigned int d = 0; d < dim; ++d)
+              p[d] = x[d][lane];
+            result[(cell * phi.n_q_points + q) * width + lane] =
+                material.structural_directions(PlaneStrain::to_3d(p));
+          }
+        }
+      }
+      return result;
+    }
+  } // namespace
+
+  template <int dim>
+  InternalForceOperator<dim>::InternalForceOperator(
+      const Mapping<dim>              &mapping,
+      const DoFHandler<dim>           &dofs,
+      const AffineConstraints<double> &constraints,
+      const MaterialLibrary           &materials)
+      : materials(materials)
+      , degree(dofs.get_fe().degree)
+  {
+    if (degree != 1 && degree != 2)
+      throw InputError("The explicit solver's matrix-free internal forces "
+                       "support polynomial degree 1 or 2, not " +
+                       std::to_string(degree) +
+                       ". Fix: set 'Finite element/Polynomial degree' to 1 "
+                       "or 2.");
+    const bool anisotropic = has_anisotropic_material<dim>(materials);
+    typename MatrixFree<dim, double>::AdditionalData additional;
+    additional.tasks_parallel_scheme =
+        MatrixFree<dim, double>::AdditionalData::none;
+    additional.mapping_update_flags =
+        update_gradients | update_JxW_values |
+        (anisotropic ? update_quadrature_points : update_default);
+    // One material per cell batch.
+    const auto &tria = dofs.get_triangulation();
+    additional.cell_vectorization_category.assign(tria.n_active_cells(), 0);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        additional.cell_vectorization_category[cell->active_cell_index()] =
+            cell->material_id();
+    additional.cell_vectorization_categories_strict = true;
+    data.reinit(mapping, dofs, constraints, QGauss<1>(degree + 1), additional);
+    if (anisotropic)
+      directions = degree == 1 ? directions_at_points<dim, 1>(data, materials)
+                               : directions_at_points<dim, 2>(data, materials);
+  }
+
+  template <int dim>
+  void InternalForceOperator<dim>::initialize_dof_vector(VectorType &v) const
+  {
+    data.initialize_dof_vector(v);
+  }
+
+  template <int dim>
+  const MatrixFree<dim, double> &InternalForceOperator<dim>::matrix_free() const
+  {
+    return data;
+  }
+
+  template <int dim>
+  template <int p>
+  void InternalForceOperator<dim>::local_apply(
+      const MatrixFree<dim, double>               &data,
+      VectorType                                  &dst,
+      const VectorType                            &src,
+      const std::pair<unsigned int, unsigned int> &cells) const
+  {
+    constexpr unsigned int                   width = VectorizedDouble::size();
+    FEEvaluation<dim, p, p + 1, dim, double> phi(data);
+    const std::vector<StructuralDirections>  isotropic(width);
+    for (unsigned int cell = cells.first; cell < cells.second; ++cell)
+    {
+      phi.reinit(cell);
+      phi.gather_evaluate(src, EvaluationFlags::gradients);
+      const unsigned int lanes = data.n_active_entries_per_cell_batch(cell);
+      const Material    &material =
+          materials.get(data.get_cell_iterator(cell, 0)->material_id());
+      for (unsigned int q = 0; q < phi.n_q_points; ++q)
+      {
+        Tensor<2, 3, VectorizedDouble> F =
+            PlaneStrain::to_3d<dim>(phi.get_gradient(q));
+        for (unsigned int d = 0; d < 3; ++d)
+          F[d][d] += 1.0;
+        const VectorizedDouble J = determinant(F);
+        for (unsigned int lane = 0; lane < width; ++lane)
+        {
+          if (lane < lanes)
+            min_J = std::min(min_J, J[lane]);
+          if (lane >= lanes || !(J[lane] > 0)) // padding or inverted: skip
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                F[i][j][lane] = (i == j) ? 1.0 : 0.0;
+        }
+        const StructuralDirections *point_directions =
+            directions.empty()
+                ? isotropic.data()
+                : &directions[(cell * phi.n_q_points + q) * width];
+        Tensor<2, 3, VectorizedDouble> P;
+        VectorizedDouble               psi;
+        material.first_piola_batch(F, point_directions, lanes, P, psi);
+        const VectorizedDouble JxW = phi.JxW(q);
+        for (unsigned int lane = 0; lane < lanes; ++lane)
+          energy += psi[lane] * JxW[lane];
+        Tensor<2, dim, VectorizedDouble> P_dim;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            P_dim[i][j] = P[i][j];
+        phi.submit_gradient(P_dim, q);
+      }
+      phi.integrate_scatter(EvaluationFlags::gradients, dst);
+    }
+  }
+
+  template <int dim>
+  typename InternalForceOperator<dim>::Result
+  InternalForceOperator<dim>::apply(const VectorType &u, VectorType &f) const
+  {
+    energy = 0;
+    min_J  = std::numeric_limits<double>::max();
+    if (degree == 1)
+      data.cell_loop(&InternalForceOperator::local_apply<1>, this, f, u, true);
+    else
+      data.cell_loop(&InternalForceOperator::local_apply<2>, this, f, u, true);
+    const MPI_Comm comm = f.get_mpi_communicator();
+    Result         result;
+    result.energy = Utilities::MPI::sum(energy, comm);
+    result.min_J  = Utilities::MPI::min(min_J, comm);
+    return result;
+  }
+
+  template class InternalForceOperator<2>;
+  template class InternalForceOperator<3>;
+} // namespace softgrasp

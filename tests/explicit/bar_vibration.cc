@@ -1,0 +1,204 @@
+// Explicit dynamics (central difference, lumped Gauss-Lobatto mass,
+// matrix-free internal forces): axial vibration of a bar fixed at x = 0 and
+// free at x = L. With Poisson's ratio 0 the bar is one-dimensional and its
+// first axial mode has the angular frequency omega_1 = pi c / (2 L), c =
+// sqrt(E / rho). Started in the mode's velocity shape at small amplitude,
+// the tip's period must match 2 pi / omega_1 within 1 % (Q1 and Q2), the
+// energy balance must hold within 1 % at every step, and the step from the
+// power iteration must be stable (for Q1 it equals the analytic h/c of
+// linear elements with lumped mass). The lumped mass adds up to rho V.
+#include "../material_factory.h"
+#include "../tests.h"
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <softgrasp/explicit/central_difference.h>
+#include <softgrasp/explicit/lumped_mass.h>
+
+using namespace dealii;
+using namespace softgrasp;
+
+namespace
+{
+  constexpr double L = 1, mu = 5e3, rho = 1000;
+
+  class ModeVelocity : public Function<3>
+  {
+  public:
+    explicit ModeVelocity(const double V)
+        : Function<3>(3)
+        , V(V)
+    {
+    }
+    double value(const Point<3> &p, const unsigned int c) const override
+    {
+      return c == 0 ? V * std::sin(M_PI * p[0] / (2 * L)) : 0.0;
+    }
+    double V;
+  };
+
+  MaterialLibrary bar_material()
+  {
+    ParameterHandler prm;
+    MaterialLibrary::declare_parameters(prm);
+    MaterialLibrary::parse_input_from_string(
+        prm,
+        "subsection Materials\n set Material ids = 0\n subsection Material 0\n"
+        "  set Model = neo-Hookean\n  set Density = 1000\n"
+        "  subsection neo-Hookean\n   set Shear modulus = 5e3\n  end\n"
+        "  subsection Volumetric\n   set Energy = quadratic\n"
+        "   set Poisson's ratio = 0\n  end\n end\nend\n");
+    MaterialLibrary library;
+    library.parse_parameters(prm);
+    return library;
+  }
+
+  void run(const unsigned int     degree,
+           const unsigned int     elements,
+           const MaterialLibrary &materials)
+  {
+    const MPI_Comm                          comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<3> tria(comm);
+    GridGenerator::subdivided_hyper_rectangle(
+        tria, {elements, 1, 1}, Point<3>(), Point<3>(L, 0.1, 0.1), true);
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(0); // colorize also numbers the cells
+    const FESystem<3> fe(FE_Q<3>(degree), 3);
+    DoFHandler<3>     dofs(tria);
+    dofs.distribute_dofs(fe);
+    const MappingQ<3>         mapping(1);
+    AffineConstraints<double> none;
+    none.close();
+    InternalForceOperator<3> force(mapping, dofs, none, materials);
+    LinearAlgebra::distributed::Vector<double> mass, u0, v0;
+    force.initialize_dof_vector(mass);
+    force.initialize_dof_vector(u0);
+    force.initialize_dof_vector(v0);
+    compute_lumped_mass(mapping, dofs, none, materials, mass);
+    const double total = mass.l1_norm() / 3;
+    SG_CHECK(std::abs(total - rho * L * 0.01) < 1e-12 * total,
+             "lumped mass equals rho V");
+
+    IndexSet fixed =
+        DoFTools::extract_boundary_dofs(dofs, ComponentMask(), {0});
+    fixed          = fixed & dofs.locally_owned_dofs();
+    const double E = 2 * mu, c = std::sqrt(E / rho);
+    const double omega = M_PI * c / (2 * L), V = 1e-3 * c;
+    VectorTools::interpolate(mapping, dofs, ModeVelocity(V), v0);
+
+    // The tip dof: x component at (L, 0, 0).
+    std::map<types::global_dof_index, Point<3>> support;
+    DoFTools::map_dofs_to_support_points(mapping, dofs, support);
+    types::global_dof_index tip = numbers::invalid_dof_index;
+    for (const auto &[i, x] : support)
+      if (dofs.locally_owned_dofs().is_element(i) &&
+          x.distance(Point<3>(L, 0, 0)) < 1e-12 &&
+          (tip == numbers::invalid_dof_index || i < tip))
+        tip = i; // the node's first dof is its x component (FESystem)
+
+    CentralDifference<3> integrator(force, mass, fixed);
+    integrator.initialize(0, u0, v0);
+    const double        dt_critical = integrator.critical_time_step();
+    const double        dt          = 0.9 * dt_critical;
+    const double        period      = 2 * M_PI / omega;
+    std::vector<double> crossings;
+    double              previous = 0, worst_balance = 0;
+    bool                stable = true;
+    while (integrator.time() < 1.6 * period && stable)
+    {
+      stable            = integrator.step(dt);
+      const auto &u     = integrator.displacement();
+      double      tip_u = tip != numbers::invalid_dof_index ? u[tip] : 0.0;
+      tip_u             = Utilities::MPI::sum(tip_u, comm);
+      if (previous > 0 && tip_u <= 0)
+        crossings.push_back(integrator.time() -
+                            dt * tip_u / (tip_u - previous));
+      previous = tip_u;
+      worst_balance =
+          std::max(worst_balance, integrator.energies().balance_error);
+    }
+    SG_CHECK(stable && crossings.size() >= 1, "ran through half a period");
+    // u_tip = V/omega sin(omega t) crosses zero downwards at t = T/2 (+ k T)
+    const double measured = 2 * crossings[0];
+    const double error    = std::abs(measured / period - 1);
+    dealii::deallog << "Q" << degree << ", " << elements
+                    << " elements: period within 1 %: " << (error < 0.01)
+                    << ", energy balance within 1 %: " << (worst_balance < 0.01)
+                    << ", time step 0.9 x 2/omega_max stable: " << stable
+                    << std::endl;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "Q" << degree << ": period " << measured << " s, analytic "
+                << period << " s, error " << error << ", energy balance "
+                << worst_balance << ", dt " << dt << " s (critical "
+                << dt_critical << " s, h/c = " << L / elements / degree / c
+                << " s)" << std::endl;
+    SG_CHECK(error < 0.01, "axial period");
+    if (degree == 1) // 1D linear elements, lumped mass: omega_max = 2 c / h
+    {
+      const double h_over_c = L / elements / c;
+      dealii::deallog << "Q1 critical step equals h/c within 2 %: "
+                      << (std::abs(dt_critical / h_over_c - 1) < 0.02)
+                      << std::endl;
+      SG_CHECK(std::abs(dt_critical / h_over_c - 1) < 0.02, "critical step");
+    }
+    SG_CHECK(worst_balance < 0.01, "energy balance");
+  }
+  /// Ten times the critical step blows up: a step that inverts an element
+  /// or produces NaN is refused and the last good state is kept.
+  void unstable(const MaterialLibrary &materials)
+  {
+    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
+    GridGenerator::subdivided_hyper_rectangle(
+        tria, {10, 1, 1}, Point<3>(), Point<3>(L, 0.1, 0.1));
+    const FESystem<3> fe(FE_Q<3>(1), 3);
+    DoFHandler<3>     dofs(tria);
+    dofs.distribute_dofs(fe);
+    const MappingQ<3>         mapping(1);
+    AffineConstraints<double> none;
+    none.close();
+    InternalForceOperator<3> force(mapping, dofs, none, materials);
+    LinearAlgebra::distributed::Vector<double> mass, u0, v0;
+    for (auto *v : {&mass, &u0, &v0})
+      force.initialize_dof_vector(*v);
+    compute_lumped_mass(mapping, dofs, none, materials, mass);
+    VectorTools::interpolate(mapping, dofs, ModeVelocity(0.5), v0);
+    CentralDifference<3> integrator(force, mass, IndexSet(dofs.n_dofs()));
+    integrator.initialize(0, u0, v0);
+    const double dt      = 10 * integrator.critical_time_step();
+    bool         refused = false;
+    unsigned int steps   = 0;
+    for (; steps < 200 && !refused; ++steps)
+    {
+      const auto   before = integrator.displacement();
+      const double t      = integrator.time();
+      refused             = !integrator.step(dt);
+      if (refused)
+      {
+        auto difference = integrator.displacement();
+        difference -= before;
+        SG_CHECK(difference.linfty_norm() == 0 && integrator.time() == t,
+                 "the refused step leaves the state as it was");
+      }
+    }
+    dealii::deallog << "10 x the critical step: blow-up detected and the step "
+                       "refused, state kept: "
+                    << refused << std::endl;
+    SG_CHECK(refused, "blow-up detected");
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  softgrasp_tests::initlog();
+  const MaterialLibrary materials = bar_material();
+  run(1, 20, materials);
+  run(2, 10, materials);
+  unstable(materials);
+}
