@@ -9,6 +9,7 @@
 #include <memory>
 #include <softgrasp/materials/material_library.h>
 #include <string>
+#include <vector>
 
 namespace softgrasp_tests
 {
@@ -38,6 +39,28 @@ namespace softgrasp_tests
     softgrasp::MaterialLibrary library;
     library.parse_parameters(prm);
     return library.get_shared(0);
+  }
+
+  /// A material library with material id i configured by @p fragments[i].
+  inline softgrasp::MaterialLibrary
+  library_from_prm(const std::vector<std::string> &fragments)
+  {
+    dealii::ParameterHandler prm;
+    softgrasp::MaterialLibrary::declare_parameters(prm);
+    std::string ids, sections;
+    for (unsigned int i = 0; i < fragments.size(); ++i)
+    {
+      ids += (i ? ", " : "") + std::to_string(i);
+      sections += " subsection Material " + std::to_string(i) + "\n" +
+                  fragments[i] + "\n end\n";
+    }
+    softgrasp::MaterialLibrary::parse_input_from_string(
+        prm,
+        "subsection Materials\n set Material ids = " + ids + "\n" + sections +
+            "end\n");
+    softgrasp::MaterialLibrary library;
+    library.parse_parameters(prm);
+    return library;
   }
 
   /// One representative parameter set per registered model (and both HGO

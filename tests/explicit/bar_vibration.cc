@@ -44,43 +44,57 @@ namespace
 
   MaterialLibrary bar_material()
   {
-    ParameterHandler prm;
-    MaterialLibrary::declare_parameters(prm);
-    MaterialLibrary::parse_input_from_string(
-        prm,
-        "subsection Materials\n set Material ids = 0\n subsection Material 0\n"
-        "  set Model = neo-Hookean\n  set Density = 1000\n"
-        "  subsection neo-Hookean\n   set Shear modulus = 5e3\n  end\n"
-        "  subsection Volumetric\n   set Energy = quadratic\n"
-        "   set Poisson's ratio = 0\n  end\n end\nend\n");
-    MaterialLibrary library;
-    library.parse_parameters(prm);
-    return library;
+    return softgrasp_tests::library_from_prm(
+        {"set Model = neo-Hookean\nset Density = 1000\n"
+         "subsection neo-Hookean\nset Shear modulus = 5e3\nend\n"
+         "subsection Volumetric\nset Energy = quadratic\n"
+         "set Poisson's ratio = 0\nend"});
   }
+
+  /// A bar of n elements along x, cross-section 0.1 m x 0.1 m (boundary id
+  /// 0 at x = 0), with its matrix-free force, lumped mass and vectors.
+  struct Bar
+  {
+    Bar(const unsigned int     degree,
+        const unsigned int     elements,
+        const MaterialLibrary &materials)
+        : tria(MPI_COMM_WORLD)
+        , fe(FE_Q<3>(degree), 3)
+        , dofs(tria)
+        , mapping(1)
+    {
+      GridGenerator::subdivided_hyper_rectangle(
+          tria, {elements, 1, 1}, Point<3>(), Point<3>(L, 0.1, 0.1), true);
+      for (const auto &cell : tria.active_cell_iterators())
+        cell->set_material_id(0); // colorize also numbers the cells
+      dofs.distribute_dofs(fe);
+      none.close();
+      force = std::make_unique<InternalForceOperator<3>>(
+          mapping, dofs, none, materials);
+      for (auto *v : {&mass, &u0, &v0})
+        force->initialize_dof_vector(*v);
+      compute_lumped_mass(mapping, dofs, none, materials, mass);
+    }
+    parallel::distributed::Triangulation<3>    tria;
+    const FESystem<3>                          fe;
+    DoFHandler<3>                              dofs;
+    const MappingQ<3>                          mapping;
+    AffineConstraints<double>                  none;
+    std::unique_ptr<InternalForceOperator<3>>  force;
+    LinearAlgebra::distributed::Vector<double> mass, u0, v0;
+  };
 
   void run(const unsigned int     degree,
            const unsigned int     elements,
            const MaterialLibrary &materials)
   {
-    const MPI_Comm                          comm = MPI_COMM_WORLD;
-    parallel::distributed::Triangulation<3> tria(comm);
-    GridGenerator::subdivided_hyper_rectangle(
-        tria, {elements, 1, 1}, Point<3>(), Point<3>(L, 0.1, 0.1), true);
-    for (const auto &cell : tria.active_cell_iterators())
-      cell->set_material_id(0); // colorize also numbers the cells
-    const FESystem<3> fe(FE_Q<3>(degree), 3);
-    DoFHandler<3>     dofs(tria);
-    dofs.distribute_dofs(fe);
-    const MappingQ<3>         mapping(1);
-    AffineConstraints<double> none;
-    none.close();
-    InternalForceOperator<3> force(mapping, dofs, none, materials);
-    LinearAlgebra::distributed::Vector<double> mass, u0, v0;
-    force.initialize_dof_vector(mass);
-    force.initialize_dof_vector(u0);
-    force.initialize_dof_vector(v0);
-    compute_lumped_mass(mapping, dofs, none, materials, mass);
-    const double total = mass.l1_norm() / 3;
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    Bar            bar(degree, elements, materials);
+    const auto    &dofs    = bar.dofs;
+    const auto    &mapping = bar.mapping;
+    const auto    &mass    = bar.mass;
+    auto          &v0      = bar.v0;
+    const double   total   = mass.l1_norm() / 3;
     SG_CHECK(std::abs(total - rho * L * 0.01) < 1e-12 * total,
              "lumped mass equals rho V");
 
@@ -101,8 +115,8 @@ namespace
           (tip == numbers::invalid_dof_index || i < tip))
         tip = i; // the node's first dof is its x component (FESystem)
 
-    CentralDifference<3> integrator(force, mass, fixed);
-    integrator.initialize(0, u0, v0);
+    CentralDifference<3> integrator(*bar.force, mass, fixed);
+    integrator.initialize(0, bar.u0, v0);
     const double        dt_critical = integrator.critical_time_step();
     const double        dt          = 0.9 * dt_critical;
     const double        period      = 2 * M_PI / omega;
@@ -152,23 +166,11 @@ namespace
   /// or produces NaN is refused and the last good state is kept.
   void unstable(const MaterialLibrary &materials)
   {
-    parallel::distributed::Triangulation<3> tria(MPI_COMM_WORLD);
-    GridGenerator::subdivided_hyper_rectangle(
-        tria, {10, 1, 1}, Point<3>(), Point<3>(L, 0.1, 0.1));
-    const FESystem<3> fe(FE_Q<3>(1), 3);
-    DoFHandler<3>     dofs(tria);
-    dofs.distribute_dofs(fe);
-    const MappingQ<3>         mapping(1);
-    AffineConstraints<double> none;
-    none.close();
-    InternalForceOperator<3> force(mapping, dofs, none, materials);
-    LinearAlgebra::distributed::Vector<double> mass, u0, v0;
-    for (auto *v : {&mass, &u0, &v0})
-      force.initialize_dof_vector(*v);
-    compute_lumped_mass(mapping, dofs, none, materials, mass);
-    VectorTools::interpolate(mapping, dofs, ModeVelocity(0.5), v0);
-    CentralDifference<3> integrator(force, mass, IndexSet(dofs.n_dofs()));
-    integrator.initialize(0, u0, v0);
+    Bar bar(1, 10, materials);
+    VectorTools::interpolate(bar.mapping, bar.dofs, ModeVelocity(0.5), bar.v0);
+    CentralDifference<3> integrator(
+        *bar.force, bar.mass, IndexSet(bar.dofs.n_dofs()));
+    integrator.initialize(0, bar.u0, bar.v0);
     const double dt      = 10 * integrator.critical_time_step();
     bool         refused = false;
     unsigned int steps   = 0;

@@ -61,17 +61,10 @@ namespace
 
   MaterialLibrary two_materials()
   {
-    ParameterHandler prm;
-    MaterialLibrary::declare_parameters(prm);
     const auto fragments =
         softgrasp_tests::model_fragments("Simo-Taylor", "0.4");
-    std::string text = "subsection Materials\n set Material ids = 0, 1\n";
-    text += " subsection Material 0\n" + fragments[0].second + "\n end\n";
-    text += " subsection Material 1\n" + fragments.back().second + "\n end\n";
-    MaterialLibrary::parse_input_from_string(prm, text + "end\n");
-    MaterialLibrary library;
-    library.parse_parameters(prm);
-    return library;
+    return softgrasp_tests::library_from_prm(
+        {fragments[0].second, fragments.back().second});
   }
 
   template <int dim>
@@ -178,16 +171,8 @@ namespace
   {
     const auto material = softgrasp_tests::material_from_prm(
         softgrasp_tests::model_fragments("Simo-Taylor", "0.4")[0].second);
-    MaterialLibrary  library;
-    ParameterHandler prm;
-    MaterialLibrary::declare_parameters(prm);
-    MaterialLibrary::parse_input_from_string(
-        prm,
-        "subsection Materials\n set Material ids = 0\n subsection Material "
-        "0\n" +
-            softgrasp_tests::model_fragments("Simo-Taylor", "0.4")[0].second +
-            "\n end\nend\n");
-    library.parse_parameters(prm);
+    const MaterialLibrary library = softgrasp_tests::library_from_prm(
+        {softgrasp_tests::model_fragments("Simo-Taylor", "0.4")[0].second});
 
     parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
     GridGenerator::subdivided_hyper_cube(tria, 4, 0, 1);
