@@ -16,8 +16,23 @@ namespace softgrasp
       , fixed(fixed)
       , alpha(mass_damping)
   {
-    for (auto *vector : {&u, &v_half, &v, &a, &f, &f_ext, &eigenvector})
+    for (auto *vector : {&u,
+                         &v_half,
+                         &v,
+                         &a,
+                         &f,
+                         &f_ext,
+                         &eigenvector,
+                         &u_prev,
+                         &v_half_prev,
+                         &a_prev,
+                         &f_prev,
+                         &f_ext_prev})
       force.initialize_dof_vector(*vector);
+    const IndexSet &owned = u.locally_owned_elements();
+    is_free.resize(owned.n_elements());
+    for (unsigned int k = 0; k < is_free.size(); ++k)
+      is_free[k] = !fixed.is_element(owned.nth_index_in_set(k));
   }
 
   template <int dim>
@@ -31,10 +46,24 @@ namespace softgrasp
     f_ext             = 0;
     if (external_forces)
       external_forces(time, displacement, f_ext);
-    for (const auto i : a.locally_owned_elements())
-      a[i] = fixed.is_element(i)
-                 ? 0.0
-                 : (f_ext[i] - f[i]) / mass[i] - alpha * velocity[i];
+    for (unsigned int k = 0; k < is_free.size(); ++k)
+      a.local_element(k) = is_free[k]
+                               ? (f_ext.local_element(k) - f.local_element(k)) /
+                                         mass.local_element(k) -
+                                     alpha * velocity.local_element(k)
+                               : 0.0;
+  }
+
+  /// 1/2 v.M.v over all ranks.
+  template <int dim>
+  double
+  CentralDifference<dim>::kinetic_energy(const VectorType &velocity) const
+  {
+    double kinetic = 0;
+    for (unsigned int k = 0; k < is_free.size(); ++k)
+      kinetic += 0.5 * mass.local_element(k) * velocity.local_element(k) *
+                 velocity.local_element(k);
+    return Utilities::MPI::sum(kinetic, velocity.get_mpi_communicator());
   }
 
   template <int dim>
@@ -48,11 +77,9 @@ namespace softgrasp
     if (prescribe)
       prescribe(t, u);
     acceleration(t, u, v);
-    started = false;
-    e       = Energies();
-    for (const auto i : v.locally_owned_elements())
-      e.kinetic += 0.5 * mass[i] * v[i] * v[i];
-    e.kinetic  = Utilities::MPI::sum(e.kinetic, u.get_mpi_communicator());
+    started    = false;
+    e          = Energies();
+    e.kinetic  = kinetic_energy(v);
     e.internal = internal_energy;
     e0         = e;
   }
@@ -77,11 +104,14 @@ namespace softgrasp
       perturbed.add(epsilon, eigenvector);
       force.apply(perturbed, y);
       double xMy = 0, xMx = 0;
-      for (const auto i : y.locally_owned_elements())
+      for (unsigned int k = 0; k < is_free.size(); ++k)
       {
-        y[i] = fixed.is_element(i) ? 0.0 : (y[i] - f0[i]) / (epsilon * mass[i]);
-        xMy += eigenvector[i] * mass[i] * y[i];
-        xMx += eigenvector[i] * mass[i] * eigenvector[i];
+        double      &yk = y.local_element(k);
+        const double m  = mass.local_element(k),
+                     x  = eigenvector.local_element(k);
+        yk = is_free[k] ? (yk - f0.local_element(k)) / (epsilon * m) : 0.0;
+        xMy += x * m * yk;
+        xMx += x * m * x;
       }
       lambda = Utilities::MPI::sum(xMy, comm) / Utilities::MPI::sum(xMx, comm);
       eigenvector = y;
@@ -91,44 +121,59 @@ namespace softgrasp
 
   template <int dim> bool CentralDifference<dim>::step(const double dt)
   {
-    const MPI_Comm   comm  = u.get_mpi_communicator();
-    const VectorType u_old = u, v_half_old = v_half, f_old = f,
-                     f_ext_old = f_ext, a_old = a;
+    const MPI_Comm comm = u.get_mpi_communicator();
+    // Keep the state before the step: copies of u and v^{n-1/2}; the force
+    // vectors are swapped (acceleration() overwrites f, f_ext and a).
+    u_prev      = u;
+    v_half_prev = v_half;
+    f_prev.swap(f);
+    f_ext_prev.swap(f_ext);
+    a_prev.swap(a);
     const double internal_old = internal_energy, J_old = smallest_J;
     // v^{n+1/2}
     const double average = started ? 0.5 * (last_dt + dt) : 0.5 * dt;
     if (!started)
       v_half = v;
-    v_half.add(average, a);
+    v_half.add(average, a_prev);
     // u^{n+1}; the fixed dofs move as prescribed
     u.add(dt, v_half);
     if (prescribe)
     {
       prescribe(t + dt, u);
       for (const auto i : fixed)
-        v_half[i] = (u[i] - u_old[i]) / dt;
+        v_half[i] = (u[i] - u_prev[i]) / dt;
     }
-    // work over the step (trapezoidal), damping dissipation
-    double       external = 0, boundary = 0, damping = 0;
     const double previous_time = t;
     t += dt;
     acceleration(t, u, v_half);
-    bool finite = std::isfinite(internal_energy) && smallest_J > 0;
-    for (const auto i : u.locally_owned_elements())
+    // work over the step (trapezoidal), damping dissipation, finiteness
+    double external = 0, boundary = 0, damping = 0;
+    bool   finite = std::isfinite(internal_energy) && smallest_J > 0;
+    for (unsigned int k = 0; k < is_free.size(); ++k)
     {
-      const double du = u[i] - u_old[i];
-      if (fixed.is_element(i)) // reactions f_int - f_ext do work on the body
-        boundary += 0.5 * ((f_old[i] - f_ext_old[i]) + (f[i] - f_ext[i])) * du;
-      else
+      const double du = u.local_element(k) - u_prev.local_element(k);
+      if (is_free[k])
       {
-        external += 0.5 * (f_ext_old[i] + f_ext[i]) * du;
-        damping += alpha * mass[i] * v_half[i] * v_half[i] * dt;
+        external +=
+            0.5 * (f_ext_prev.local_element(k) + f_ext.local_element(k)) * du;
+        damping += alpha * mass.local_element(k) * v_half.local_element(k) *
+                   v_half.local_element(k) * dt;
       }
-      finite = finite && std::isfinite(u[i]) && std::isfinite(a[i]);
+      else // the reactions f_int - f_ext do work on the body
+        boundary += 0.5 *
+                    (f_prev.local_element(k) - f_ext_prev.local_element(k) +
+                     f.local_element(k) - f_ext.local_element(k)) *
+                    du;
+      finite = finite && std::isfinite(u.local_element(k)) &&
+               std::isfinite(a.local_element(k));
     }
     if (Utilities::MPI::min(finite ? 1 : 0, comm) == 0)
     {
-      u = u_old, v_half = v_half_old, f = f_old, f_ext = f_ext_old, a = a_old;
+      u.swap(u_prev);
+      v_half.swap(v_half_prev);
+      f.swap(f_prev);
+      f_ext.swap(f_ext_prev);
+      a.swap(a_prev);
       internal_energy = internal_old;
       smallest_J      = J_old;
       t               = previous_time;
@@ -137,10 +182,7 @@ namespace softgrasp
     // v^{n+1} for the kinetic energy
     v = v_half;
     v.add(0.5 * dt, a);
-    double kinetic = 0;
-    for (const auto i : v.locally_owned_elements())
-      kinetic += 0.5 * mass[i] * v[i] * v[i];
-    e.kinetic  = Utilities::MPI::sum(kinetic, comm);
+    e.kinetic  = kinetic_energy(v);
     e.internal = internal_energy;
     e.external_work += Utilities::MPI::sum(external, comm);
     e.boundary_work += Utilities::MPI::sum(boundary, comm);

@@ -11,7 +11,6 @@ namespace softgrasp
 
   namespace
   {
-    template <int dim>
     bool has_anisotropic_material(const MaterialLibrary &materials)
     {
       for (const auto id : materials.material_ids())
@@ -69,7 +68,7 @@ namespace softgrasp
                        std::to_string(degree) +
                        ". Fix: set 'Finite element/Polynomial degree' to 1 "
                        "or 2.");
-    const bool anisotropic = has_anisotropic_material<dim>(materials);
+    const bool anisotropic = has_anisotropic_material(materials);
     typename MatrixFree<dim, double>::AdditionalData additional;
     additional.tasks_parallel_scheme =
         MatrixFree<dim, double>::AdditionalData::none;

@@ -151,7 +151,7 @@ namespace softgrasp
       std::ofstream out(directory + "/" + base + "_surface.dat");
       out << "# deformed surface: x y z (mm) e_max (1); one quad per block\n";
       for (const auto &part : all)
-        for (std::size_t i = 0; i + 15 < part.size() + 0; i += 16)
+        for (std::size_t i = 0; i + 16 <= part.size(); i += 16)
         {
           for (unsigned int v = 0; v < 4; ++v)
           {

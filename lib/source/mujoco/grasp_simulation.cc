@@ -60,15 +60,20 @@ namespace softgrasp
                          "' is not a slide joint with an actuator. Fix: name "
                          "the base's slide joint.");
     }
+    recorded_joints    = finger_joints;
+    recorded_actuators = finger_actuators;
+    if (slide_joint >= 0)
+    {
+      recorded_joints.push_back(slide_joint);
+      recorded_actuators.push_back(mujoco.actuator_of_joint(slide_joint));
+    }
     // The hand: every body but the world and the object's subtree; its
     // geoms are the links whose forces are recorded.
     for (int b = 1; b < m->nbody; ++b)
     {
-      int  root      = b;
       bool in_object = false;
       for (int p = b; p > 0; p = m->body_parentid[p])
         in_object = in_object || p == object_body;
-      (void)root;
       if (!in_object)
         hand_bodies.push_back(b);
     }
@@ -155,10 +160,8 @@ namespace softgrasp
       body.name = mj_id2name(m, mjOBJ_BODY, object_body);
       data.bodies.push_back(body);
     }
-    for (const int j : finger_joints)
+    for (const int j : recorded_joints)
       data.joints.push_back({mj_id2name(m, mjOBJ_JOINT, j), {}, {}});
-    if (slide_joint >= 0)
-      data.joints.push_back({mj_id2name(m, mjOBJ_JOINT, slide_joint), {}, {}});
     for (const int g : link_geoms)
     {
       KinematicsData::LinkHistory h;
@@ -232,6 +235,21 @@ namespace softgrasp
     mujoco.data()->ctrl[a] = value;
   }
 
+  namespace
+  {
+    /// World pose of body @p b in @p d (after kinematics).
+    Pose body_pose(const mjData *d, const int b)
+    {
+      Pose pose;
+      pose.position = {d->xpos[3 * b], d->xpos[3 * b + 1], d->xpos[3 * b + 2]};
+      pose.orientation = Eigen::Quaterniond(d->xquat[4 * b],
+                                            d->xquat[4 * b + 1],
+                                            d->xquat[4 * b + 2],
+                                            d->xquat[4 * b + 3]);
+      return pose;
+    }
+  } // namespace
+
   void GraspSimulation::record(const double time, const mjData *pose_data)
   {
     const mjModel *m = mujoco.model();
@@ -242,38 +260,15 @@ namespace softgrasp
     // contacts of the step: bring them in line with the current state.
     mj_forward(m, d);
     data.time.push_back(time);
-    std::size_t i = 0;
-    for (const int b : hand_bodies)
+    // the hand's bodies, then the object (KinematicsData's body order)
+    for (std::size_t i = 0; i < hand_bodies.size(); ++i)
+      data.bodies[i].poses.push_back(body_pose(pose_data, hand_bodies[i]));
+    data.bodies.back().poses.push_back(body_pose(pose_data, object_body));
+    for (std::size_t k = 0; k < recorded_joints.size(); ++k)
     {
-      Pose pose;
-      pose.position    = {pose_data->xpos[3 * b],
-                          pose_data->xpos[3 * b + 1],
-                          pose_data->xpos[3 * b + 2]};
-      pose.orientation = Eigen::Quaterniond(pose_data->xquat[4 * b],
-                                            pose_data->xquat[4 * b + 1],
-                                            pose_data->xquat[4 * b + 2],
-                                            pose_data->xquat[4 * b + 3]);
-      data.bodies[i++].poses.push_back(pose);
-    }
-    Pose object;
-    object.position = {pose_data->xpos[3 * object_body],
-                       pose_data->xpos[3 * object_body + 1],
-                       pose_data->xpos[3 * object_body + 2]};
-    object.orientation =
-        Eigen::Quaterniond(pose_data->xquat[4 * object_body],
-                           pose_data->xquat[4 * object_body + 1],
-                           pose_data->xquat[4 * object_body + 2],
-                           pose_data->xquat[4 * object_body + 3]);
-    data.bodies[i].poses.push_back(object);
-
-    std::vector<int> joints = finger_joints;
-    if (slide_joint >= 0)
-      joints.push_back(slide_joint);
-    for (std::size_t k = 0; k < joints.size(); ++k)
-    {
-      const int j = joints[k];
+      const int j = recorded_joints[k];
       data.joints[k].angle.push_back(pose_data->qpos[m->jnt_qposadr[j]]);
-      data.joints[k].target.push_back(d->ctrl[mujoco.actuator_of_joint(j)]);
+      data.joints[k].target.push_back(d->ctrl[recorded_actuators[k]]);
     }
     const auto forces = link_contact_forces(m, d, object_body, link_geoms);
     for (std::size_t k = 0; k < forces.size(); ++k)
@@ -445,7 +440,6 @@ namespace softgrasp
   void GraspSimulation::indent()
   {
     const mjModel *m     = mujoco.model();
-    mjData        *d     = mujoco.data();
     const auto    &ind   = parameters.indentation;
     const double   start = data.equilibrium_time;
     const double   slide0 =
@@ -469,7 +463,6 @@ namespace softgrasp
           << (settled ? "" : " (MuJoCo not settled within 'Settle time')")
           << '\n';
     }
-    (void)d;
     data.phases.push_back(
         {"indentation", start, start + ind.duration, ind.extra_angle});
   }

@@ -4,6 +4,7 @@
 #include <deal.II/base/index_set.h>
 #include <functional>
 #include <softgrasp/explicit/internal_force_operator.h>
+#include <vector>
 
 namespace softgrasp
 {
@@ -74,6 +75,8 @@ namespace softgrasp
 
   private:
     void acceleration(const double t, const VectorType &u, const VectorType &v);
+    /// 1/2 v.M.v over all ranks (J; J/m in 2D).
+    double kinetic_energy(const VectorType &velocity) const;
 
     const InternalForceOperator<dim> &force;
     const VectorType                 &mass;
@@ -81,9 +84,14 @@ namespace softgrasp
     double                            alpha;
     double                            t = 0, last_dt = 0;
     VectorType                        u, v_half, v, a, f, f_ext, eigenvector;
-    bool                              started = false;
-    Energies                          e, e0;
-    double                            smallest_J = 1, internal_energy = 0;
+    /// The state before the current step (kept for the rollback and the
+    /// work over the step; swapped, not reallocated, each step).
+    VectorType u_prev, v_half_prev, a_prev, f_prev, f_ext_prev;
+    /// Per locally owned dof (local order): 1 if free, 0 if fixed.
+    std::vector<unsigned char> is_free;
+    bool                       started = false;
+    Energies                   e, e0;
+    double                     smallest_J = 1, internal_energy = 0;
   };
 } // namespace softgrasp
 

@@ -68,10 +68,13 @@ namespace softgrasp
     mjData               *fk_data = nullptr;
     int                   object_body, base_body, slide_joint = -1;
     std::vector<int>      finger_joints, finger_actuators, link_geoms;
-    std::vector<int>      required_links;
-    std::vector<int>      hand_bodies;
-    std::vector<double>   equilibrium_qpos, equilibrium_targets;
-    KinematicsData        data;
+    /// The joints in the file (fingers, then the slide joint) and their
+    /// actuators.
+    std::vector<int>    recorded_joints, recorded_actuators;
+    std::vector<int>    required_links;
+    std::vector<int>    hand_bodies;
+    std::vector<double> equilibrium_qpos, equilibrium_targets;
+    KinematicsData      data;
   };
 } // namespace softgrasp
 
