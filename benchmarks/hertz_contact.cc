@@ -14,6 +14,7 @@
 #include <deal.II/base/mpi.h>
 #include <iostream>
 #include <softgrasp/base/parameter_reader.h>
+#include <softgrasp/mechanics/quasi_static_solver.h>
 
 using namespace dealii;
 
@@ -33,9 +34,9 @@ main(int argc, char **argv)
   const double       depth       = argc > 9 ? std::stod(argv[9]) : 1e-4;
 
   ParameterHandler prm;
-  softgrasp::QuasiStaticSolver<3>::declare_parameters(prm);
+  softgrasp::MechanicsSolver<3>::declare_parameters(prm);
   softgrasp::ParameterReader reader;
-  softgrasp::QuasiStaticSolver<3>::add_passes(reader);
+  softgrasp::MechanicsSolver<3>::add_passes(reader);
   reader.read_string(prm,
                      softgrasp_tests::hertz_prm(n,
                                                 ratio,

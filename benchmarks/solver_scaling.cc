@@ -49,9 +49,9 @@ main(int argc, char **argv)
       << " set VTU interval = 0\n set Verbose = false\nend\n";
 
   ParameterHandler prm_handler;
-  softgrasp::QuasiStaticSolver<3>::declare_parameters(prm_handler);
+  softgrasp::MechanicsSolver<3>::declare_parameters(prm_handler);
   softgrasp::ParameterReader reader;
-  softgrasp::QuasiStaticSolver<3>::add_passes(reader);
+  softgrasp::MechanicsSolver<3>::add_passes(reader);
   reader.read_string(prm_handler, prm.str(), "solver_scaling");
   softgrasp::QuasiStaticSolver<3> solver(comm, prm_handler);
   solver.run();

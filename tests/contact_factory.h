@@ -68,7 +68,7 @@ namespace softgrasp_tests
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
 
 namespace softgrasp_tests
 {
@@ -150,7 +150,7 @@ namespace softgrasp_tests
    * clamped to [last closed, first open]. Collective.
    */
   template <int dim>
-  double edge_contact_radius(const softgrasp::QuasiStaticSolver<dim> &solver)
+  double edge_contact_radius(const softgrasp::MechanicsSolver<dim> &solver)
   {
     const auto         &contact = *solver.contact();
     const auto         &u       = solver.system().ghosted_solution();

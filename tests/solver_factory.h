@@ -1,27 +1,27 @@
-// Build a QuasiStaticSolver from the text of a parameter file, and the
-// parameter files of the benchmark problems used by several tests.
+// Build a solver (MechanicsSolver::create: 'Time/Integrator') from the text of
+// a parameter file, and the parameter files of the benchmark problems used by
+// several tests.
 #ifndef softgrasp_tests_solver_factory_h
 #define softgrasp_tests_solver_factory_h
 
 #include <memory>
 #include <softgrasp/base/parameter_reader.h>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
 #include <sstream>
 #include <string>
 
 namespace softgrasp_tests
 {
   template <int dim>
-  std::unique_ptr<softgrasp::QuasiStaticSolver<dim>>
+  std::unique_ptr<softgrasp::MechanicsSolver<dim>>
   make_solver(const std::string &text)
   {
     dealii::ParameterHandler prm;
-    softgrasp::QuasiStaticSolver<dim>::declare_parameters(prm);
+    softgrasp::MechanicsSolver<dim>::declare_parameters(prm);
     softgrasp::ParameterReader reader;
-    softgrasp::QuasiStaticSolver<dim>::add_passes(reader);
+    softgrasp::MechanicsSolver<dim>::add_passes(reader);
     reader.read_string(prm, text, "test parameters");
-    return std::make_unique<softgrasp::QuasiStaticSolver<dim>>(MPI_COMM_WORLD,
-                                                               prm);
+    return softgrasp::MechanicsSolver<dim>::create(MPI_COMM_WORLD, prm);
   }
 
   /// Run a solver and return the last value of history column @p column.

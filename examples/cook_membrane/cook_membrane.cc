@@ -28,16 +28,16 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/mechanics/quasi_static_program.h>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/mechanics/solver_program.h>
 
 // Print the vertical displacement of the monitored corner next to a
 // reference value (m).
 template <int dim>
 void
-report_tip_displacement(const softgrasp::QuasiStaticSolver<dim> &solver,
-                        const double                             reference,
-                        const std::string                       &label)
+report_tip_displacement(const softgrasp::MechanicsSolver<dim> &solver,
+                        const double                           reference,
+                        const std::string                     &label)
 {
   const auto  &history = solver.history();
   const double uy      = history.value(history.rows.size() - 1, "u0_y");
@@ -56,15 +56,15 @@ main(int argc, char **argv)
   // The library's program driver reads the .prm (every parameter is
   // documented: ./cook_membrane --print-parameters), runs the quasi-static
   // solver, and turns bad input or a failed run into a clear message.
-  softgrasp::QuasiStaticProgram program;
+  softgrasp::SolverProgram program;
   program.default_parameter_file = "cook_membrane.prm";
 
   // After the run: compare the tip deflection with the published values
   // (3D) or the plane-strain limit (2D).
-  program.report_2d = [](const softgrasp::QuasiStaticSolver<2> &solver) {
+  program.report_2d = [](const softgrasp::MechanicsSolver<2> &solver) {
     report_tip_displacement(solver, 13.77e-3, "converged plane-strain value");
   };
-  program.report_3d = [](const softgrasp::QuasiStaticSolver<3> &solver)
+  program.report_3d = [](const softgrasp::MechanicsSolver<3> &solver)
   {
     report_tip_displacement(
         solver,

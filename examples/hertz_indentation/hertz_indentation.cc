@@ -37,17 +37,17 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/mechanics/quasi_static_program.h>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/mechanics/solver_program.h>
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  softgrasp::QuasiStaticProgram program;
+  softgrasp::SolverProgram program;
   program.default_parameter_file = "hertz_indentation.prm";
-  program.report_3d = [](const softgrasp::QuasiStaticSolver<3> &solver)
+  program.report_3d = [](const softgrasp::MechanicsSolver<3> &solver)
   {
     // Hertz's values from the problem's own parameters: the sphere's
     // radius, the depth from its trajectory, E and nu from the material.

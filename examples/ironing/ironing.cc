@@ -29,17 +29,17 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/mechanics/quasi_static_program.h>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/mechanics/solver_program.h>
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  softgrasp::QuasiStaticProgram program;
+  softgrasp::SolverProgram program;
   program.default_parameter_file = "ironing.prm";
-  program.report_2d = [](const softgrasp::QuasiStaticSolver<2> &solver)
+  program.report_2d = [](const softgrasp::MechanicsSolver<2> &solver)
   {
     const auto       &history  = solver.contact_history();
     const std::size_t last     = history.rows.size() - 1;

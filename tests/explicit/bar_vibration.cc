@@ -125,7 +125,7 @@ namespace
     bool                stable = true;
     while (integrator.time() < 1.6 * period && stable)
     {
-      stable            = integrator.step(dt);
+      stable = integrator.step(dt) == CentralDifference<3>::StepResult::ok;
       const auto &u     = integrator.displacement();
       double      tip_u = tip != numbers::invalid_dof_index ? u[tip] : 0.0;
       tip_u             = Utilities::MPI::sum(tip_u, comm);
@@ -178,7 +178,7 @@ namespace
     {
       const auto   before = integrator.displacement();
       const double t      = integrator.time();
-      refused             = !integrator.step(dt);
+      refused = integrator.step(dt) != CentralDifference<3>::StepResult::ok;
       if (refused)
       {
         auto difference = integrator.displacement();

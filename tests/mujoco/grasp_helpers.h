@@ -4,7 +4,7 @@
 #define softgrasp_tests_grasp_helpers_h
 
 #include <softgrasp/grasp/indentation_study.h>
-#include <softgrasp/mechanics/quasi_static_program.h>
+#include <softgrasp/mechanics/solver_program.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
 
 namespace softgrasp_tests
@@ -14,7 +14,7 @@ namespace softgrasp_tests
   {
     softgrasp::GraspParameters::declare_parameters(prm);
     softgrasp::IndentationStudy::declare_parameters(prm);
-    softgrasp::QuasiStaticProgram::read_parameters<3>(
+    softgrasp::SolverProgram::read_parameters<3>(
         prm, PARAMETER_FILES "/sphere_squeeze.prm");
   }
 

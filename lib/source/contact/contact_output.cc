@@ -7,7 +7,7 @@ namespace softgrasp
   using namespace dealii;
 
   template <int dim>
-  ContactOutput<dim>::ContactOutput(const MortarContact<dim> &contact)
+  ContactOutput<dim>::ContactOutput(const ContactSurface<dim> &contact)
       : contact(contact)
   {
   }

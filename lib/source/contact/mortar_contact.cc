@@ -1,3 +1,4 @@
+#include <cmath>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector_operation.h>
 #include <softgrasp/base/input_error.h>
@@ -13,8 +14,7 @@ namespace softgrasp
                                     const RigidBodySet      &bodies,
                                     const double             shear_modulus,
                                     TimerOutput             &timer)
-      : parameters(parameters)
-      , bodies(bodies)
+      : ContactSurface<dim>(parameters, bodies)
       , shear_modulus(shear_modulus)
       , timer(timer)
   {
@@ -23,134 +23,21 @@ namespace softgrasp
   template <int dim>
   void MortarContact<dim>::setup(const SolidSystem<dim> &system)
   {
-    comm                      = system.communicator();
-    const auto        &fe     = system.fe();
-    const auto        &dofs   = system.dof_handler();
-    const IndexSet    &owned  = system.locally_owned_dofs();
-    const IndexSet    &ghosts = system.locally_relevant_dofs();
-    const unsigned int n_pts  = fe.base_element(0).n_dofs_per_cell();
-    const unsigned int degree = fe.degree;
-    cell_nodes.assign(n_pts, {});
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-    {
-      const auto [c, k] = fe.system_to_component_index(i);
-      cell_nodes[k][c]  = i;
-    }
+    ContactSurface<dim>::setup(system);
+    const IndexSet &owned  = system.locally_owned_dofs();
+    const IndexSet &ghosts = system.locally_relevant_dofs();
     for (auto &v : row_combination)
-      v.reinit(owned, ghosts, comm);
-    governed.reinit(owned, ghosts, comm);
-    owned_scratch.reinit(owned, comm);
+      v.reinit(owned, ghosts, this->comm);
+    governed.reinit(owned, ghosts, this->comm);
+    owned_scratch.reinit(owned, this->comm);
     fd_step = 1e-7 * system.length_scale();
-
-    const std::set<types::boundary_id> slave(
-        parameters.slave_boundary_ids.begin(),
-        parameters.slave_boundary_ids.end());
-    const auto on_slave = [&](const auto &cell, const unsigned int f)
+    law.assign(this->node_list.size(), NodeLaw());
+    for (unsigned int j = 0; j < law.size(); ++j)
     {
-      return cell->face(f)->at_boundary() &&
-             slave.count(cell->face(f)->boundary_id()) > 0;
-    };
-
-    // Reference nodal areas D_j = int N_j dA over the slave surface.
-    TrilinosWrappers::MPI::Vector area;
-    area.reinit(owned, ghosts, comm, true);
-    FEFaceValues<dim>                    face_values(system.mapping(),
-                                  fe,
-                                  QGauss<dim - 1>(degree + 1),
-                                  update_values | update_JxW_values);
-    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (on_slave(cell, f))
-          {
-            face_values.reinit(cell, f);
-            cell->get_dof_indices(indices);
-            for (unsigned int k = 0; k < n_pts; ++k)
-            {
-              const unsigned int i   = cell_nodes[k][0];
-              double             sum = 0;
-              for (const auto q : face_values.quadrature_point_indices())
-                sum += face_values.shape_value(i, q) * face_values.JxW(q);
-              area[indices[i]] += sum;
-            }
-          }
-    area.compress(VectorOperation::add);
-
-    // The owned nodes, found from owned and ghost cells.
-    FEValues<dim>                     support(system.mapping(),
-                          fe,
-                          Quadrature<dim>(fe.get_unit_support_points()),
-                          update_quadrature_points);
-    std::set<types::global_dof_index> seen;
-    node_list.clear();
-    for (const auto &cell : dofs.active_cell_iterators())
-    {
-      if (cell->is_artificial())
-        continue;
-      bool any = false;
-      for (const auto f : cell->face_indices())
-        any = any || on_slave(cell, f);
-      if (!any)
-        continue;
-      cell->get_dof_indices(indices);
-      support.reinit(cell);
-      for (const auto f : cell->face_indices())
-        if (on_slave(cell, f))
-          for (unsigned int k = 0; k < n_pts; ++k)
-          {
-            const unsigned int i = cell_nodes[k][0];
-            if (!fe.has_support_on_face(i, f) ||
-                !owned.is_element(indices[i]) || seen.count(indices[i]))
-              continue;
-            seen.insert(indices[i]);
-            Node node;
-            for (unsigned int c = 0; c < dim; ++c)
-              node.dofs[c] = indices[cell_nodes[k][c]];
-            const Point<dim> &X = support.quadrature_point(i);
-            for (unsigned int d = 0; d < dim; ++d)
-              node.reference_position[d] = X[d];
-            node.last_converged = node.reference_position;
-            node.reference_area = area[indices[i]];
-            if (!(node.reference_area > 0))
-              throw InputError(
-                  "The contact surface has a node with non-positive weight "
-                  "int N_j dA = " +
-                  std::to_string(node.reference_area) +
-                  "; the dual mortar basis needs positive weights. Fix: use "
-                  "Lagrange elements of degree 1 or 2 on the slave surface.");
-            const double h =
-                std::pow(node.reference_area, (dim - 2.0) / (dim - 1.0));
-            node.c = parameters.complementarity_factor * 2 * shear_modulus * h;
-            node_list.push_back(node);
-          }
-    }
-    const unsigned int total =
-        Utilities::MPI::sum<unsigned int>(node_list.size(), comm);
-    if (total == 0)
-      throw InputError("The contact surface is empty: no boundary face has "
-                       "one of the ids in 'Contact/Slave boundary ids'. Fix: "
-                       "give the boundary ids of the surface that touches "
-                       "the rigid bodies.");
-  }
-
-  template <int dim> void MortarContact<dim>::set_time(const double time)
-  {
-    current_time = time;
-  }
-
-  template <int dim>
-  void
-  MortarContact<dim>::place_bodies(const double                    time,
-                                   std::vector<std::vector<Pose>> &poses) const
-  {
-    const auto &list = bodies.bodies();
-    poses.resize(list.size());
-    for (unsigned int b = 0; b < list.size(); ++b)
-    {
-      poses[b].resize(list[b].geoms().size());
-      for (unsigned int g = 0; g < list[b].geoms().size(); ++g)
-        poses[b][g] = list[b].geom_pose(g, time);
+      const double h = std::pow(this->node_list[j].reference_area,
+                                (dim - 2.0) / (dim - 1.0));
+      law[j].c =
+          this->parameters.complementarity_factor * 2 * shear_modulus * h;
     }
   }
 
@@ -168,54 +55,6 @@ namespace softgrasp
     converged_time = time;
     place_bodies(time, poses_converged);
     step_changes = 0;
-  }
-
-  template <int dim>
-  Eigen::Vector3d MortarContact<dim>::normal_at(const Proximity       &p,
-                                                const Eigen::Vector3d &x) const
-  {
-    const Pose     &pose = poses_now[p.body][p.geom];
-    const auto     &geom = bodies.bodies()[p.body].geoms()[p.geom];
-    Eigen::Vector3d n =
-        pose.rotate_to_world(geom.shape->query(pose.to_local(x)).normal);
-    if (dim == 2)
-    {
-      n[2] = 0;
-      n.normalize();
-    }
-    return n;
-  }
-
-  template <int dim>
-  typename MortarContact<dim>::Proximity
-  MortarContact<dim>::nearest(const Eigen::Vector3d &x) const
-  {
-    Proximity   best;
-    const auto &list = bodies.bodies();
-    for (unsigned int b = 0; b < list.size(); ++b)
-      for (unsigned int g = 0; g < list[b].geoms().size(); ++g)
-      {
-        const Pose  &pose  = poses_now[b][g];
-        const Shape &shape = *list[b].geoms()[g].shape;
-        // The bounding sphere bounds the distance from below: skip geoms
-        // that cannot be nearer than the best so far.
-        if ((x - pose.position).norm() - shape.bounding_radius() >= best.gap)
-          continue;
-        const ShapeQuery q = shape.query(pose.to_local(x));
-        if (q.distance < best.gap)
-        {
-          best.body   = b;
-          best.geom   = g;
-          best.gap    = q.distance;
-          best.normal = pose.rotate_to_world(q.normal);
-        }
-      }
-    if (dim == 2 && best.body >= 0)
-    {
-      best.normal[2] = 0;
-      best.normal.normalize();
-    }
-    return best;
   }
 
   template <int dim>
@@ -250,10 +89,12 @@ namespace softgrasp
     is_governed = 0;
 
     unsigned int active = 0, slipping = 0, changes = 0;
-    for (auto &node : node_list)
+    for (unsigned int j = 0; j < node_list.size(); ++j)
     {
-      Eigen::Vector3d x = node.reference_position;
-      Eigen::Vector3d f = Eigen::Vector3d::Zero();
+      Node           &node = node_list[j];
+      NodeLaw        &rule = law[j];
+      Eigen::Vector3d x    = node.reference_position;
+      Eigen::Vector3d f    = Eigen::Vector3d::Zero();
       for (unsigned int c = 0; c < dim; ++c)
       {
         node.free[c] = !constraints.is_constrained(node.dofs[c]);
@@ -266,7 +107,7 @@ namespace softgrasp
       NodalContactInput   input;
       input.f   = f;
       input.mu  = parameters.friction_coefficient;
-      input.c   = node.c;
+      input.c   = rule.c;
       input.gap = p.gap;
       input.n   = p.body >= 0 ? p.normal : Eigen::Vector3d(0, 0, 1);
       input.H.setZero();
@@ -292,9 +133,9 @@ namespace softgrasp
       node.normal = input.n;
       node.force  = f;
       node.slip   = lin.slip;
-      node.phi    = lin.phi;
-      node.A      = lin.A;
-      node.B      = lin.B;
+      rule.phi    = lin.phi;
+      rule.A      = lin.A;
+      rule.B      = lin.B;
       // Constrained components (symmetry planes, hanging nodes) keep their
       // own equations; the contact conditions act on the free ones.
       for (unsigned int a = 0; a < 3; ++a)
@@ -304,18 +145,18 @@ namespace softgrasp
           const bool b_free = b < dim && node.free[b];
           if (!a_free)
           {
-            node.A(a, b) = (a == b ? 1.0 : 0.0);
-            node.B(a, b) = 0;
+            rule.A(a, b) = (a == b ? 1.0 : 0.0);
+            rule.B(a, b) = 0;
           }
           else if (!b_free)
           {
-            node.A(a, b) = 0;
-            node.B(a, b) = 0;
+            rule.A(a, b) = 0;
+            rule.B(a, b) = 0;
           }
         }
       for (unsigned int a = 0; a < 3; ++a)
         if (a >= dim || !node.free[a])
-          node.phi[a] = f[a];
+          rule.phi[a] = f[a];
 
       if (lin.status != ContactStatus::inactive)
       {
@@ -323,7 +164,7 @@ namespace softgrasp
         is_governed[node.dofs[0]] = 1;
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
-            combination[b][node.dofs[a]] = node.A(a, b);
+            combination[b][node.dofs[a]] = rule.A(a, b);
       }
       if (lin.status == ContactStatus::slip)
         ++slipping;
@@ -347,11 +188,14 @@ namespace softgrasp
   void MortarContact<dim>::apply_to_residual(
       TrilinosWrappers::MPI::Vector &residual) const
   {
-    for (const auto &node : node_list)
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const Node &node = node_list[j];
       if (node.status != ContactStatus::inactive)
         for (unsigned int a = 0; a < dim; ++a)
           if (node.free[a])
-            residual[node.dofs[a]] = -node.phi[a];
+            residual[node.dofs[a]] = -law[j].phi[a];
+    }
     residual.compress(VectorOperation::insert);
   }
 
@@ -399,19 +243,21 @@ namespace softgrasp
   MortarContact<dim>::add_node_terms(TrilinosWrappers::SparseMatrix &tangent,
                                      TrilinosWrappers::MPI::Vector  &rhs) const
   {
-    for (const auto &node : node_list)
+    for (unsigned int j = 0; j < node_list.size(); ++j)
     {
+      const Node    &node = node_list[j];
+      const NodeLaw &rule = law[j];
       if (node.status == ContactStatus::inactive)
         continue;
-      const Eigen::Vector3d Af = node.A * node.force;
+      const Eigen::Vector3d Af = rule.A * node.force;
       for (unsigned int a = 0; a < dim; ++a)
       {
         if (!node.free[a])
           continue;
         for (unsigned int b = 0; b < dim; ++b)
-          if (node.free[b] && node.B(a, b) != 0)
-            tangent.add(node.dofs[a], node.dofs[b], node.B(a, b));
-        rhs[node.dofs[a]] += -(node.phi[a] - Af[a]);
+          if (node.free[b] && rule.B(a, b) != 0)
+            tangent.add(node.dofs[a], node.dofs[b], rule.B(a, b));
+        rhs[node.dofs[a]] += -(rule.phi[a] - Af[a]);
       }
     }
     tangent.compress(VectorOperation::add);
@@ -424,43 +270,6 @@ namespace softgrasp
     out << "contact " << active_count << " active (" << slip_count << " slip), "
         << change_count << " changes";
     return out.str();
-  }
-
-  template <int dim>
-  const std::vector<typename MortarContact<dim>::Node> &
-  MortarContact<dim>::nodes() const
-  {
-    return node_list;
-  }
-
-  template <int dim>
-  const RigidBodySet &MortarContact<dim>::rigid_bodies() const
-  {
-    return bodies;
-  }
-
-  template <int dim>
-  bool MortarContact<dim>::is_slave_boundary(const types::boundary_id id) const
-  {
-    for (const auto s : parameters.slave_boundary_ids)
-      if (s == id)
-        return true;
-    return false;
-  }
-
-  template <int dim> double MortarContact<dim>::time() const
-  {
-    return current_time;
-  }
-
-  template <int dim> unsigned int MortarContact<dim>::n_active() const
-  {
-    return active_count;
-  }
-
-  template <int dim> unsigned int MortarContact<dim>::n_slip() const
-  {
-    return slip_count;
   }
 
   template <int dim> unsigned int MortarContact<dim>::n_changes() const

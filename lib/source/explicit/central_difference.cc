@@ -22,6 +22,8 @@ namespace softgrasp
                          &a,
                          &f,
                          &f_ext,
+                         &f_contact,
+                         &u_trial,
                          &eigenvector,
                          &u_prev,
                          &v_half_prev,
@@ -119,22 +121,117 @@ namespace softgrasp
     return 2.0 / std::sqrt(std::max(lambda, 1e-300));
   }
 
-  template <int dim> bool CentralDifference<dim>::step(const double dt)
+  template <int dim>
+  void CentralDifference<dim>::set_balance_limit(const double limit)
   {
+    balance_limit = limit;
+  }
+
+  template <int dim>
+  void CentralDifference<dim>::apply_constraints(const double dt,
+                                                 const double h)
+  {
+    f_contact = 0;
+    if (!constrain)
+      return;
+    u_trial = u;
+    constrain(t + dt, dt, h, u_prev, u);
+    for (unsigned int k = 0; k < is_free.size(); ++k)
+    {
+      const double du = u.local_element(k) - u_trial.local_element(k);
+      if (du == 0 || !is_free[k])
+        continue;
+      v_half.local_element(k) += du / dt;
+      f_contact.local_element(k) = mass.local_element(k) * du / (dt * h);
+    }
+  }
+
+  template <int dim>
+  bool CentralDifference<dim>::update_energies(const double h)
+  {
+    // Power of the forces at t^n times h, with the mean velocity
+    // (v^{n-1/2} + v^{n+1/2})/2: the change of the half-step kinetic
+    // energy, exactly.
+    double external = 0, supports = 0, contact = 0, damping = 0, kinetic = 0;
+    bool   finite = std::isfinite(internal_energy);
+    for (unsigned int k = 0; k < is_free.size(); ++k)
+    {
+      const double v_new  = v_half.local_element(k);
+      const double v_mean = 0.5 * (v_half_prev.local_element(k) + v_new);
+      if (is_free[k])
+      {
+        const double m = mass.local_element(k);
+        external += f_ext_prev.local_element(k) * v_mean * h;
+        contact += f_contact.local_element(k) * v_mean * h;
+        damping += alpha * m * v_half_prev.local_element(k) * v_mean * h;
+        kinetic += 0.5 * m * v_new * v_new;
+      }
+      else // the reaction f_int - f_ext is the supports' force on the body
+        supports += (f_prev.local_element(k) - f_ext_prev.local_element(k)) *
+                    v_mean * h;
+      finite = finite && std::isfinite(u.local_element(k)) &&
+               std::isfinite(a.local_element(k));
+    }
     const MPI_Comm comm = u.get_mpi_communicator();
+    if (Utilities::MPI::min(finite ? 1 : 0, comm) == 0)
+      return false;
+    double sums[5] = {external, supports, contact, damping, kinetic};
+    Utilities::MPI::sum(sums, comm, sums);
+    e.external_work += sums[0];
+    e.support_work += sums[1];
+    e.contact_work += sums[2];
+    e.damping += sums[3];
+    e.kinetic              = sums[4];
+    e.internal             = 0.5 * (internal_start + internal_energy);
+    const double imbalance = e.kinetic + e.internal - e0.kinetic - e0.internal -
+                             e.external_work - e.support_work - e.contact_work +
+                             e.damping;
+    const double scale = std::max({e.kinetic,
+                                   std::abs(e.internal),
+                                   std::abs(e.external_work),
+                                   std::abs(e.support_work),
+                                   std::abs(e.contact_work),
+                                   e.damping,
+                                   e0.kinetic + std::abs(e0.internal),
+                                   1e-300});
+    e.balance_error    = std::abs(imbalance) / scale;
+    return true;
+  }
+
+  template <int dim>
+  void CentralDifference<dim>::undo_step(const double internal_old,
+                                         const double J_old,
+                                         const double previous_time)
+  {
+    u.swap(u_prev);
+    v_half.swap(v_half_prev);
+    f.swap(f_prev);
+    f_ext.swap(f_ext_prev);
+    a.swap(a_prev);
+    internal_energy = internal_old;
+    smallest_J      = J_old;
+    t               = previous_time;
+  }
+
+  template <int dim>
+  typename CentralDifference<dim>::StepResult
+  CentralDifference<dim>::step(const double dt)
+  {
     // Keep the state before the step: copies of u and v^{n-1/2}; the force
     // vectors are swapped (acceleration() overwrites f, f_ext and a).
-    u_prev      = u;
+    u_prev = u;
+    if (!started)
+      v_half = v; // v^{-1/2} := v^0 for the first step's mean velocity
     v_half_prev = v_half;
     f_prev.swap(f);
     f_ext_prev.swap(f_ext);
     a_prev.swap(a);
-    const double internal_old = internal_energy, J_old = smallest_J;
+    const Energies e_old        = e;
+    const double   internal_old = internal_energy, J_old = smallest_J;
+    internal_start = internal_energy;
     // v^{n+1/2}
-    const double average = started ? 0.5 * (last_dt + dt) : 0.5 * dt;
-    if (!started)
-      v_half = v;
-    v_half.add(average, a_prev);
+    const double h = started ? 0.5 * (last_dt + dt) : 0.5 * dt;
+    v_half.add(h, a_prev);
     // u^{n+1}; the fixed dofs move as prescribed
     u.add(dt, v_half);
     if (prescribe)
@@ -143,64 +240,90 @@ namespace softgrasp
       for (const auto i : fixed)
         v_half[i] = (u[i] - u_prev[i]) / dt;
     }
+    apply_constraints(dt, h);
     const double previous_time = t;
     t += dt;
     acceleration(t, u, v_half);
-    // work over the step (trapezoidal), damping dissipation, finiteness
-    double external = 0, boundary = 0, damping = 0;
-    bool   finite = std::isfinite(internal_energy) && smallest_J > 0;
-    for (unsigned int k = 0; k < is_free.size(); ++k)
+
+    StepResult result = StepResult::ok;
+    if (!update_energies(h))
+      result = StepResult::not_finite;
+    else if (!(smallest_J > 0))
+      result = StepResult::inverted;
+    else if (balance_limit > 0 && steps_taken >= 50 &&
+             e.balance_error > balance_limit)
+      result = StepResult::unbalanced;
+    if (result != StepResult::ok)
     {
-      const double du = u.local_element(k) - u_prev.local_element(k);
-      if (is_free[k])
-      {
-        external +=
-            0.5 * (f_ext_prev.local_element(k) + f_ext.local_element(k)) * du;
-        damping += alpha * mass.local_element(k) * v_half.local_element(k) *
-                   v_half.local_element(k) * dt;
-      }
-      else // the reactions f_int - f_ext do work on the body
-        boundary += 0.5 *
-                    (f_prev.local_element(k) - f_ext_prev.local_element(k) +
-                     f.local_element(k) - f_ext.local_element(k)) *
-                    du;
-      finite = finite && std::isfinite(u.local_element(k)) &&
-               std::isfinite(a.local_element(k));
+      undo_step(internal_old, J_old, previous_time);
+      e = e_old;
+      return result;
     }
-    if (Utilities::MPI::min(finite ? 1 : 0, comm) == 0)
-    {
-      u.swap(u_prev);
-      v_half.swap(v_half_prev);
-      f.swap(f_prev);
-      f_ext.swap(f_ext_prev);
-      a.swap(a_prev);
-      internal_energy = internal_old;
-      smallest_J      = J_old;
-      t               = previous_time;
-      return false;
-    }
-    // v^{n+1} for the kinetic energy
+    // v^{n+1} estimate, for velocity()
     v = v_half;
     v.add(0.5 * dt, a);
-    e.kinetic  = kinetic_energy(v);
-    e.internal = internal_energy;
-    e.external_work += Utilities::MPI::sum(external, comm);
-    e.boundary_work += Utilities::MPI::sum(boundary, comm);
-    e.damping += Utilities::MPI::sum(damping, comm);
-    const double imbalance = e.kinetic + e.internal - e.external_work +
-                             e.boundary_work + e.damping - e0.kinetic -
-                             e0.internal;
-    const double scale = std::max({e.kinetic,
-                                   std::abs(e.internal),
-                                   std::abs(e.external_work),
-                                   std::abs(e.boundary_work),
-                                   e.damping,
-                                   e0.kinetic + std::abs(e0.internal),
-                                   1e-300});
-    e.balance_error    = std::abs(imbalance) / scale;
-    started            = true;
-    last_dt            = dt;
-    return true;
+    started = true;
+    last_dt = dt;
+    ++steps_taken;
+    return result;
+  }
+
+  template <int dim>
+  std::vector<double> CentralDifference<dim>::state_scalars() const
+  {
+    return {t,
+            last_dt,
+            started ? 1.0 : 0.0,
+            e.kinetic,
+            e.internal,
+            e.external_work,
+            e.support_work,
+            e.contact_work,
+            e.damping,
+            e0.kinetic,
+            e0.internal};
+  }
+
+  template <int dim>
+  void CentralDifference<dim>::restore(const VectorType          &u0,
+                                       const VectorType          &v_half0,
+                                       const std::vector<double> &s)
+  {
+    AssertThrow(s.size() == 11,
+                ExcMessage("The explicit integrator's saved state has " +
+                           std::to_string(s.size()) +
+                           " entries instead of 11: the checkpoint was not "
+                           "written by this version."));
+    t       = s[0];
+    last_dt = s[1];
+    started = s[2] > 0;
+    u       = u0;
+    v_half  = v_half0;
+    acceleration(t, u, v_half);
+    v = v_half;
+    v.add(0.5 * last_dt, a);
+    e.kinetic       = s[3];
+    e.internal      = s[4];
+    e.external_work = s[5];
+    e.support_work  = s[6];
+    e.contact_work  = s[7];
+    e.damping       = s[8];
+    e0.kinetic      = s[9];
+    e0.internal     = s[10];
+  }
+
+  template <int dim>
+  const typename CentralDifference<dim>::VectorType &
+  CentralDifference<dim>::velocity_half_step() const
+  {
+    return v_half;
+  }
+
+  template <int dim>
+  const typename CentralDifference<dim>::VectorType &
+  CentralDifference<dim>::contact_forces() const
+  {
+    return f_contact;
   }
 
   template <int dim> double CentralDifference<dim>::time() const

@@ -11,7 +11,8 @@ namespace softgrasp
                            const DoFHandler<dim>           &dofs,
                            const AffineConstraints<double> &constraints,
                            const MaterialLibrary           &materials,
-                           LinearAlgebra::distributed::Vector<double> &mass)
+                           LinearAlgebra::distributed::Vector<double> &mass,
+                           const std::vector<double> &density_factor)
   {
     const auto              &fe = dofs.get_fe();
     const QGaussLobatto<dim> nodal(fe.degree + 1);
@@ -25,8 +26,11 @@ namespace softgrasp
       if (!cell->is_locally_owned())
         continue;
       fe_values.reinit(cell);
-      const double rho = materials.get(cell->material_id()).density();
-      local            = 0;
+      const double rho =
+          materials.get(cell->material_id()).density() *
+          (density_factor.empty() ? 1.0
+                                  : density_factor[cell->active_cell_index()]);
+      local = 0;
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       {
         const unsigned int component = fe.system_to_component_index(i).first;
@@ -47,11 +51,13 @@ namespace softgrasp
                          const DoFHandler<2> &,
                          const AffineConstraints<double> &,
                          const MaterialLibrary &,
-                         LinearAlgebra::distributed::Vector<double> &);
+                         LinearAlgebra::distributed::Vector<double> &,
+                         const std::vector<double> &);
   template void
   compute_lumped_mass<3>(const Mapping<3> &,
                          const DoFHandler<3> &,
                          const AffineConstraints<double> &,
                          const MaterialLibrary &,
-                         LinearAlgebra::distributed::Vector<double> &);
+                         LinearAlgebra::distributed::Vector<double> &,
+                         const std::vector<double> &);
 } // namespace softgrasp

@@ -5,7 +5,7 @@
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/grasp/grasp_pictures.h>
 #include <softgrasp/grasp/indentation_study.h>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
 
 namespace softgrasp
 {
@@ -115,7 +115,8 @@ namespace softgrasp
         prm.leave_subsection();
       }
 
-    QuasiStaticSolver<3> solver(comm, prm);
+    const auto solver_pointer       = MechanicsSolver<3>::create(comm, prm);
+    auto      &solver               = *solver_pointer;
     solver.rigid_bodies()           = rigid_bodies_from(cut);
     const auto              &bodies = solver.rigid_bodies();
     std::vector<std::string> labels;
@@ -207,8 +208,8 @@ namespace softgrasp
     }
   }
 
-  void IndentationStudy::write_link_table(const QuasiStaticSolver<3> &solver,
-                                          const KinematicsData       &cut)
+  void IndentationStudy::write_link_table(const MechanicsSolver<3> &solver,
+                                          const KinematicsData     &cut)
   {
     const auto  &history  = solver.contact_history();
     const double duration = cut.time.back() - cut.time.front();

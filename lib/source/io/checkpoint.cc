@@ -21,11 +21,13 @@ namespace softgrasp
   }
 
   template <int dim>
-  void
-  Checkpoint<dim>::save(const parallel::distributed::Triangulation<dim> &tria,
-                        const SolidSystem<dim>                          &system,
-                        const RunState &state) const
+  void Checkpoint<dim>::save(
+      const parallel::distributed::Triangulation<dim>          &tria,
+      const SolidSystem<dim>                                   &system,
+      RunState                                                  state,
+      const std::vector<const TrilinosWrappers::MPI::Vector *> &extra) const
   {
+    state.n_extra_fields       = extra.size();
     const MPI_Comm    comm     = system.communicator();
     const bool        root     = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string target   = directory + "/checkpoint";
@@ -40,7 +42,10 @@ namespace softgrasp
 
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
         transfer(system.dof_handler());
-    transfer.prepare_for_serialization(system.ghosted_solution());
+    std::vector<const TrilinosWrappers::MPI::Vector *> fields = {
+        &system.ghosted_solution()};
+    fields.insert(fields.end(), extra.begin(), extra.end());
+    transfer.prepare_for_serialization(fields);
     // save() is const on the mesh data but not declared so.
     const_cast<parallel::distributed::Triangulation<dim> &>(tria).save(partial +
                                                                        "/mesh");
@@ -76,8 +81,9 @@ namespace softgrasp
 
   template <int dim>
   RunState
-  Checkpoint<dim>::load(parallel::distributed::Triangulation<dim> &tria,
-                        SolidSystem<dim>                          &system) const
+  Checkpoint<dim>::load(parallel::distributed::Triangulation<dim>  &tria,
+                        SolidSystem<dim>                           &system,
+                        std::vector<TrilinosWrappers::MPI::Vector> &extra) const
   {
     const std::string source = complete_directory();
     if (source.empty())
@@ -107,7 +113,14 @@ namespace softgrasp
     system.setup();
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
         transfer(system.dof_handler());
-    transfer.deserialize(system.solution());
+    extra.resize(state.n_extra_fields);
+    std::vector<TrilinosWrappers::MPI::Vector *> fields = {&system.solution()};
+    for (auto &field : extra)
+    {
+      field.reinit(system.locally_owned_dofs(), system.communicator());
+      fields.push_back(&field);
+    }
+    transfer.deserialize(fields);
     system.update_ghosts();
     return state;
   }

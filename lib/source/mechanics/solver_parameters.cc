@@ -71,13 +71,30 @@ namespace softgrasp
   void TimeParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time");
+    prm.declare_entry(
+        "Integrator",
+        "quasi-static",
+        Patterns::Selection("quasi-static|explicit dynamic"),
+        "Time integration. 'quasi-static': static equilibrium at every load "
+        "step by Newton's method (inertia neglected; the 'Newton' and "
+        "'Linear solver' subsections apply). 'explicit dynamic': central "
+        "differences with a lumped mass and the stable time step (inertia "
+        "included; the 'Explicit dynamics' subsection applies, and 'Time "
+        "step' is the interval between recorded states).");
     prm.declare_entry("End time",
                       "1",
                       Patterns::Double(0),
-                      "Pseudo-time at the end of loading; the variable t in "
-                      "the load expressions runs from 0 to it. Unit: s.");
-    prm.declare_entry(
-        "Time step", "0.1", Patterns::Double(0), "Nominal load step. Unit: s.");
+                      "End of the run: the variable t in the load "
+                      "expressions runs from 0 to it (a pseudo-time in "
+                      "quasi-static runs, physical time in explicit dynamic "
+                      "ones). Unit: s.");
+    prm.declare_entry("Time step",
+                      "0.1",
+                      Patterns::Double(0),
+                      "Quasi-static: the nominal load step. Explicit: the "
+                      "interval at which the history, progress and VTU "
+                      "output are recorded (the integration step is the "
+                      "stable one). Unit: s.");
     prm.declare_entry("Minimum time step",
                       "1e-6",
                       Patterns::Double(0),
@@ -95,6 +112,9 @@ namespace softgrasp
   {
     prm.enter_subsection("Time");
     const CheckedSection section(prm, "Time");
+    integrator    = prm.get("Integrator") == "explicit dynamic"
+                        ? TimeIntegrator::explicit_dynamic
+                        : TimeIntegrator::quasi_static;
     end_time      = section.get_positive("End time", "s");
     step_size     = section.get_positive("Time step", "s");
     minimum_step  = section.get_positive("Minimum time step", "s");
@@ -289,6 +309,65 @@ namespace softgrasp
     prm.leave_subsection();
   }
 
+  void ExplicitParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Explicit dynamics");
+    prm.declare_entry("Safety factor",
+                      "0.8",
+                      Patterns::Double(0, 1),
+                      "The time step is this factor times the critical step "
+                      "2/omega_max of the current state (omega_max from a "
+                      "power iteration on M^-1 K). Unit: 1.");
+    prm.declare_entry("Stable step interval",
+                      "100",
+                      Patterns::Integer(1),
+                      "Recompute the critical step every this many steps, "
+                      "as the mesh deforms. Unit: 1.");
+    prm.declare_entry("Fixed time step",
+                      "0",
+                      Patterns::Double(0),
+                      "If > 0, integrate with this step instead of the "
+                      "stable one; a run whose step exceeds the critical "
+                      "step is stopped. Unit: s.");
+    prm.declare_entry("Mass scaling time step",
+                      "0",
+                      Patterns::Double(0),
+                      "If > 0, add mass to the nodes of the elements whose "
+                      "own stable step h/c is below this, so that the step "
+                      "reaches it; the added mass is reported in percent. "
+                      "Changes the dynamics: only for quasi-static loading. "
+                      "Unit: s.");
+    prm.declare_entry("Mass damping",
+                      "0",
+                      Patterns::Double(0),
+                      "Mass-proportional damping alpha: a force -alpha M v "
+                      "on every node. For quasi-static loading, about the "
+                      "lowest natural frequency 2 pi f_1 (critical damping "
+                      "of the first mode). Unit: 1/s.");
+    prm.declare_entry("Energy balance limit",
+                      "0.05",
+                      Patterns::Double(0),
+                      "Stop the run (writing the last good state) when the "
+                      "relative energy balance error exceeds this: the sign "
+                      "of an unstable step. Unit: 1.");
+    prm.leave_subsection();
+  }
+
+  void ExplicitParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Explicit dynamics");
+    const CheckedSection section(prm, "Explicit dynamics");
+    safety_factor        = section.get_positive("Safety factor", "1");
+    stable_step_interval = prm.get_integer("Stable step interval");
+    fixed_time_step      = section.get_positive("Fixed time step", "s", true);
+    mass_scaling_time_step =
+        section.get_positive("Mass scaling time step", "s", true);
+    mass_damping = section.get_positive("Mass damping", "1/s", true);
+    energy_balance_limit =
+        section.get_positive("Energy balance limit", "1", true);
+    prm.leave_subsection();
+  }
+
   void SolverParameters::declare_parameters(ParameterHandler &prm)
   {
     DiscretizationParameters::declare_parameters(prm);
@@ -297,6 +376,7 @@ namespace softgrasp
     LinearSolverParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     CheckpointParameters::declare_parameters(prm);
+    ExplicitParameters::declare_parameters(prm);
   }
 
   void SolverParameters::parse_parameters(ParameterHandler &prm)
@@ -307,5 +387,6 @@ namespace softgrasp
     linear_solver.parse_parameters(prm);
     output.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
+    explicit_dynamics.parse_parameters(prm);
   }
 } // namespace softgrasp

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/grasp/indentation_study.h>
-#include <softgrasp/mechanics/quasi_static_program.h>
+#include <softgrasp/mechanics/solver_program.h>
 #include <softgrasp/mujoco/grasp_simulation.h>
 #include <softgrasp/mujoco/grasp_study_program.h>
 
@@ -19,7 +19,7 @@ namespace softgrasp
     {
       GraspParameters::declare_parameters(prm);
       IndentationStudy::declare_parameters(prm);
-      QuasiStaticProgram::read_parameters<3>(prm, filename);
+      SolverProgram::read_parameters<3>(prm, filename);
     }
 
     /// The rigid stage on rank 0; its error (if any) reaches every rank.

@@ -4,7 +4,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/numerics/data_out.h>
-#include <softgrasp/contact/mortar_contact.h>
+#include <softgrasp/contact/contact_surface.h>
 #include <string>
 #include <vector>
 
@@ -33,17 +33,17 @@ namespace softgrasp
   };
 
   /**
-   * Output of a MortarContact: per geom and per body force resultants with
-   * the normal/lateral split f_n = (n n^T) F, f_mu = (I - n n^T) F, where
-   * n is the geom's reference normal (given, or the area-weighted mean
-   * normal of its contact patch), rows for the contact history table, and
-   * surface fields for the VTU files: contact traction (Pa), contact
-   * pressure (Pa), gap (m) and status (0 open, 1 stick, 2 slip).
+   * Output of a ContactSurface (implicit or explicit contact): per geom and per
+   * body force resultants with the normal/lateral split f_n = (n n^T) F, f_mu =
+   * (I - n n^T) F, where n is the geom's reference normal (given, or the
+   * area-weighted mean normal of its contact patch), rows for the contact
+   * history table, and surface fields for the VTU files: contact traction (Pa),
+   * contact pressure (Pa), gap (m) and status (0 open, 1 stick, 2 slip).
    */
   template <int dim> class ContactOutput
   {
   public:
-    explicit ContactOutput(const MortarContact<dim> &contact);
+    explicit ContactOutput(const ContactSurface<dim> &contact);
 
     /// Build the scalar field numbering (after the system's setup()).
     void setup(const SolidSystem<dim> &system);
@@ -63,11 +63,11 @@ namespace softgrasp
                     dealii::DataOut<dim>   &data_out);
 
     /// Deformed nodal areas int N_j da (m^2; m in 2D) of the owned slave
-    /// nodes, in the order of MortarContact::nodes(). Collective.
+    /// nodes, in the order of ContactSurface::nodes(). Collective.
     std::vector<double> current_areas(const SolidSystem<dim> &system) const;
 
   private:
-    const MortarContact<dim>                &contact;
+    const ContactSurface<dim>               &contact;
     std::unique_ptr<dealii::FE_Q<dim>>       scalar_fe;
     std::unique_ptr<dealii::DoFHandler<dim>> scalar_dofs;
     /// Scalar dof of each owned node's location.

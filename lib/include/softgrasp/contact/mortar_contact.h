@@ -3,11 +3,8 @@
 
 #include <array>
 #include <deal.II/base/timer.h>
-#include <softgrasp/contact/contact_parameters.h>
-#include <softgrasp/contact/nodal_contact_law.h>
+#include <softgrasp/contact/contact_surface.h>
 #include <softgrasp/mechanics/nodal_conditions.h>
-#include <softgrasp/mechanics/solid_system.h>
-#include <softgrasp/rigid/rigid_body_set.h>
 
 namespace softgrasp
 {
@@ -35,33 +32,14 @@ namespace softgrasp
    * motion relative to the rigid surface point it sat at when the last
    * step converged (accept_step()).
    *
-   * In 2D, the plane problem lies in the world x-y plane (z = 0) and the
-   * rigid geoms must be invariant along z there (cylinders along z, spheres
-   * centred at z = 0, planes containing z).
+   * The surface geometry (nodes, rigid poses, distances) comes from
+   * ContactSurface.
    */
-  template <int dim> class MortarContact : public NodalConditions<dim>
+  template <int dim>
+  class MortarContact : public ContactSurface<dim>, public NodalConditions<dim>
   {
   public:
-    /// Per owned slave node, after evaluate().
-    struct Node
-    {
-      std::array<dealii::types::global_dof_index, dim> dofs;
-      std::array<bool, dim>                            free{};
-      Eigen::Vector3d reference_position = Eigen::Vector3d::Zero(); ///< X (m)
-      Eigen::Vector3d last_converged     = Eigen::Vector3d::Zero(); ///< x (m)
-      double          reference_area     = 0; ///< D_j in the reference (m^2)
-      double          c                  = 0; ///< complementarity (N/m)
-      ContactStatus   status             = ContactStatus::inactive;
-      int             body               = -1; ///< nearest body (-1: none)
-      unsigned int    geom               = 0;
-      double          gap    = std::numeric_limits<double>::infinity(); ///< m
-      Eigen::Vector3d normal = Eigen::Vector3d::Zero(); ///< rigid outward
-      Eigen::Vector3d force  = Eigen::Vector3d::Zero(); ///< on the body (N)
-      Eigen::Vector3d slip   = Eigen::Vector3d::Zero(); ///< in the step (m)
-      Eigen::Vector3d phi    = Eigen::Vector3d::Zero();
-      Eigen::Matrix3d A      = Eigen::Matrix3d::Identity();
-      Eigen::Matrix3d B      = Eigen::Matrix3d::Zero();
-    };
+    using Node = ContactNode<dim>;
 
     MortarContact(const ContactParameters &parameters,
                   const RigidBodySet      &bodies,
@@ -69,10 +47,7 @@ namespace softgrasp
                   dealii::TimerOutput     &timer);
 
     /// Find the slave nodes of @p system (after its setup()).
-    void setup(const SolidSystem<dim> &system);
-
-    /// Time (s) at which the rigid bodies are placed in evaluate().
-    void set_time(const double time);
+    void setup(const SolidSystem<dim> &system) override;
 
     /// Record the converged state at @p time (s) as the start of the next
     /// step's slip (call after each converged step and after a restart).
@@ -90,53 +65,48 @@ namespace softgrasp
                                dealii::TrilinosWrappers::MPI::Vector  &rhs) const override;
     std::string iteration_report() const override;
 
-    /// The locally owned slave nodes.
-    const std::vector<Node> &nodes() const;
-    const RigidBodySet      &rigid_bodies() const;
-    bool   is_slave_boundary(const dealii::types::boundary_id id) const;
-    double time() const;
-
-    /// Global numbers of the last evaluation: active and slipping nodes,
-    /// and status changes since the evaluation before.
-    unsigned int n_active() const;
-    unsigned int n_slip() const;
+    /// Status changes since the evaluation before.
     unsigned int n_changes() const;
     /// Status changes summed over all evaluations since the last
     /// accept_step() (the active-set changes of a load step).
     unsigned int changes_in_step() const;
 
   private:
-    struct Proximity
+    using Proximity = typename ContactSurface<dim>::Proximity;
+    using ContactSurface<dim>::node_list;
+    using ContactSurface<dim>::poses_now;
+    using ContactSurface<dim>::current_time;
+    using ContactSurface<dim>::comm;
+    using ContactSurface<dim>::cell_nodes;
+    using ContactSurface<dim>::parameters;
+    using ContactSurface<dim>::active_count;
+    using ContactSurface<dim>::slip_count;
+    using ContactSurface<dim>::nearest;
+    using ContactSurface<dim>::normal_at;
+    using ContactSurface<dim>::place_bodies;
+
+    /// The complementarity function of a node and its linearisation.
+    struct NodeLaw
     {
-      int             body = -1;
-      unsigned int    geom = 0;
-      double          gap  = std::numeric_limits<double>::infinity();
-      Eigen::Vector3d normal;
+      double          c   = 0; ///< complementarity parameter (N/m)
+      Eigen::Vector3d phi = Eigen::Vector3d::Zero();
+      Eigen::Matrix3d A   = Eigen::Matrix3d::Identity();
+      Eigen::Matrix3d B   = Eigen::Matrix3d::Zero();
     };
-    Proximity       nearest(const Eigen::Vector3d &x) const;
-    Eigen::Vector3d normal_at(const Proximity       &p,
-                              const Eigen::Vector3d &x) const;
+
     Eigen::Matrix3d normal_gradient(const Proximity       &p,
                                     const Eigen::Vector3d &x) const;
-    void            place_bodies(const double                    time,
-                                 std::vector<std::vector<Pose>> &poses) const;
 
-    const ContactParameters        parameters;
-    const RigidBodySet            &bodies;
     const double                   shear_modulus;
     dealii::TimerOutput           &timer;
-    MPI_Comm                       comm         = MPI_COMM_SELF;
-    double                         current_time = 0, converged_time = 0;
-    double                         fd_step = 1e-9; ///< m
-    std::vector<std::vector<Pose>> poses_now, poses_converged;
-    std::vector<Node>              node_list;
-    /// Local dofs of each support point of a cell: [point][component].
-    std::vector<std::array<unsigned int, dim>>             cell_nodes;
+    double                         converged_time = 0;
+    double                         fd_step        = 1e-9; ///< m
+    std::vector<std::vector<Pose>> poses_converged;
+    std::vector<NodeLaw>           law; ///< per node of node_list
     std::array<dealii::TrilinosWrappers::MPI::Vector, dim> row_combination;
     dealii::TrilinosWrappers::MPI::Vector                  governed;
     dealii::TrilinosWrappers::MPI::Vector                  owned_scratch;
-    unsigned int active_count = 0, slip_count = 0, change_count = 0;
-    unsigned int step_changes = 0;
+    unsigned int change_count = 0, step_changes = 0;
   };
 } // namespace softgrasp
 

@@ -10,20 +10,29 @@ namespace softgrasp
 {
   /**
    * Central-difference (explicit) time integration of
-   *   M a = f_ext - f_int(u) - alpha M v
+   *   M a = f_ext - f_int(u) + f_c - alpha M v
    * with the diagonal mass M of compute_lumped_mass():
-   *   v^{n+1/2} = v^{n-1/2} + dt a^n,   u^{n+1} = u^n + dt v^{n+1/2},
-   * started by v^{1/2} = v^0 + dt/2 a^0. Dofs in the fixed set move as
-   * prescribed (their acceleration is not computed; the internal force
-   * there is the reaction). alpha (1/s) is optional mass-proportional
-   * damping.
+   *   v^{n+1/2} = v^{n-1/2} + h a^n,   u^{n+1} = u^n + dt v^{n+1/2},
+   * h = (dt_{n-1} + dt_n)/2, started by v^{1/2} = v^0 + dt/2 a^0. Dofs in
+   * the fixed set move as prescribed (their acceleration is not computed;
+   * the internal force there is the reaction). alpha (1/s) is optional
+   * mass-proportional damping. Contact forces f_c enter as kinematic
+   * corrections of the predicted u^{n+1} (constrain, forward-increment
+   * Lagrange multipliers): a correction du of a free dof is the force
+   * M du / (dt h) at t^n.
    *
-   * Energy bookkeeping per step (J; J/m in 2D): kinetic 1/2 v.M.v at
-   * integer steps (v^n as the mean of the half-step velocities), internal
-   * (strain) energy, work of the external forces and of the prescribed
-   * motion (the reactions), and the energy dissipated by damping; the
-   * balance error is |K + U - W_ext - W_fixed + D - (K0 + U0)| over the
-   * largest of these terms.
+   * Energy bookkeeping per step (J; J/m in 2D), with the discrete identity
+   * of the scheme: the kinetic energy K = 1/2 v.M.v at the last half step
+   * changes by the power of the forces at t^n, F^n . (v^{n-1/2} +
+   * v^{n+1/2})/2, times h. The internal (strain) energy is reported at the
+   * same half step, U = (U^n + U^{n+1})/2; the work of the external forces,
+   * of the supports (the reactions f_int - f_ext at fixed dofs) and of
+   * contact, and the energy dissipated by damping, are accumulated in the
+   * same way. The balance error is
+   *   |K + U - K0 - U0 - W_ext - W_supports - W_contact + D|
+   * over the largest of these terms. Contact work is negative: frictional
+   * sliding and the (perfectly plastic) arrest of nodes hitting a body
+   * dissipate.
    */
   template <int dim> class CentralDifference
   {
@@ -32,9 +41,18 @@ namespace softgrasp
 
     struct Energies
     {
-      double kinetic = 0, internal = 0, external_work = 0, boundary_work = 0,
-             damping       = 0;
+      double kinetic = 0, internal = 0, external_work = 0, support_work = 0,
+             contact_work = 0, damping = 0;
       double balance_error = 0; ///< relative, see the class documentation
+    };
+
+    /// Why step() refused a step.
+    enum class StepResult
+    {
+      ok,
+      not_finite, ///< NaN or infinite displacement/acceleration
+      inverted,   ///< det F <= 0 at a quadrature point
+      unbalanced  ///< energy balance error above the limit
     };
 
     /// @p mass from compute_lumped_mass(); @p fixed: locally owned dofs
@@ -49,6 +67,21 @@ namespace softgrasp
     /// Adds external forces (N) at time t to f (default: none).
     std::function<void(const double t, const VectorType &u, VectorType &f)>
         external_forces;
+    /**
+     * Corrects the predicted displacement u^{n+1} for kinematic
+     * constraints (contact): called with t^{n+1}, dt, h, u^n and u^{n+1};
+     * may change free dofs only (default: none).
+     */
+    std::function<void(const double      t,
+                       const double      dt,
+                       const double      h,
+                       const VectorType &u_old,
+                       VectorType       &u)>
+        constrain;
+
+    /// Refuse steps whose energy balance error exceeds @p limit, from the
+    /// 50th step on (before, the energies may be at round-off level).
+    void set_balance_limit(const double limit);
 
     /// Start at time @p t0 from displacement @p u0 and velocity @p v0.
     void
@@ -62,14 +95,29 @@ namespace softgrasp
      */
     double critical_time_step(const unsigned int iterations = 40);
 
-    /// Advance by @p dt (s). Returns false if det F <= 0 somewhere or a
-    /// value is not finite (the state before the step is kept).
-    bool step(const double dt);
+    /// Advance by @p dt (s). A step that is not ok is undone (the state
+    /// before it is kept).
+    StepResult step(const double dt);
+
+    /// The scalars a restart needs (time, last step, energies).
+    std::vector<double> state_scalars() const;
+    /**
+     * Continue from a saved state: displacement @p u, half-step velocity
+     * @p v_half (velocity_half_step()) and state_scalars().
+     */
+    void restore(const VectorType          &u,
+                 const VectorType          &v_half,
+                 const std::vector<double> &scalars);
 
     double            time() const;
     const VectorType &displacement() const;
-    /// Velocity at the current (integer) step.
+    /// Velocity at the current step, v^{n-1/2} + dt/2 a^n (m/s; the
+    /// contact forces of the coming step are not in it).
     const VectorType &velocity() const;
+    /// Velocity at the last half step v^{n-1/2} (m/s).
+    const VectorType &velocity_half_step() const;
+    /// Contact forces on the tissue of the last step (N; at t^{n-1}).
+    const VectorType &contact_forces() const;
     Energies          energies() const;
     double            min_J() const;
 
@@ -77,13 +125,22 @@ namespace softgrasp
     void acceleration(const double t, const VectorType &u, const VectorType &v);
     /// 1/2 v.M.v over all ranks (J; J/m in 2D).
     double kinetic_energy(const VectorType &velocity) const;
+    /// Apply constrain() to u; turn its corrections into f_c and v.
+    void apply_constraints(const double dt, const double h);
+    /// Energies after a step of velocity step h; false if not finite.
+    bool update_energies(const double h);
+    void undo_step(const double internal_old,
+                   const double J_old,
+                   const double previous_time);
 
     const InternalForceOperator<dim> &force;
     const VectorType                 &mass;
     dealii::IndexSet                  fixed;
     double                            alpha;
+    double                            balance_limit = 0; ///< 0: none
+    unsigned long                     steps_taken   = 0;
     double                            t = 0, last_dt = 0;
-    VectorType                        u, v_half, v, a, f, f_ext, eigenvector;
+    VectorType u, v_half, v, a, f, f_ext, f_contact, u_trial, eigenvector;
     /// The state before the current step (kept for the rollback and the
     /// work over the step; swapped, not reallocated, each step).
     VectorType u_prev, v_half_prev, a_prev, f_prev, f_ext_prev;
@@ -92,6 +149,7 @@ namespace softgrasp
     bool                       started = false;
     Energies                   e, e0;
     double                     smallest_J = 1, internal_energy = 0;
+    double                     internal_start = 0; ///< U^n of the step
   };
 } // namespace softgrasp
 

@@ -6,6 +6,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <softgrasp/materials/material_library.h>
+#include <vector>
 
 namespace softgrasp
 {
@@ -20,6 +21,8 @@ namespace softgrasp
    * nodes pass their mass on to the nodes they are constrained to.
    * The total per displacement component is the body's mass exactly.
    * @p mass must be initialised with the matrix-free partitioner.
+   * @p density_factor, if not empty, multiplies the density of each cell
+   * (by active cell index): the mass scaling of the explicit solver.
    */
   template <int dim>
   void
@@ -27,7 +30,8 @@ namespace softgrasp
                       const dealii::DoFHandler<dim>           &dofs,
                       const dealii::AffineConstraints<double> &constraints,
                       const MaterialLibrary                   &materials,
-                      dealii::LinearAlgebra::distributed::Vector<double> &mass);
+                      dealii::LinearAlgebra::distributed::Vector<double> &mass,
+                      const std::vector<double> &density_factor = {});
 } // namespace softgrasp
 
 #endif

@@ -9,7 +9,7 @@
 
 namespace softgrasp
 {
-  template <int dim> class QuasiStaticSolver;
+  template <int dim> class MechanicsSolver;
 
   /**
    * The finite element half of a grasp study: from the equilibrium grasp a
@@ -17,7 +17,8 @@ namespace softgrasp
    * finger links further into the tissue along the recorded "indentation"
    * phase, until its end or until a target normal force on a chosen link.
    *
-   * The run is a QuasiStaticSolver<3> on the .prm's mesh, materials and
+   * The run is a MechanicsSolver<3> ('Time/Integrator': quasi-static or
+   * explicit dynamic) on the .prm's mesh, materials and
    * contact settings; the study sets
    *  - the rigid bodies: every body of the file with geoms (capsules stay
    *    capsules), moving on the recorded poses, with the equilibrium contact
@@ -70,8 +71,8 @@ namespace softgrasp
     const HistoryWriter &link_table() const;
 
   private:
-    void write_link_table(const QuasiStaticSolver<3> &solver,
-                          const KinematicsData       &phase);
+    void write_link_table(const MechanicsSolver<3> &solver,
+                          const KinematicsData     &phase);
 
     MPI_Comm                  comm;
     dealii::ParameterHandler &prm;

@@ -21,17 +21,23 @@ namespace softgrasp
     std::vector<std::pair<double, std::string>> output_records;
     std::vector<std::string>                    contact_columns;
     std::vector<std::vector<double>>            contact_rows;
+    /// Number of fields saved besides the displacement (e.g. velocity).
+    unsigned int n_extra_fields = 0;
+    /// The time integrator's own scalars (e.g. energy accumulators).
+    std::vector<double> integrator_state;
 
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {
       archive &time &step_size &step &n_outputs &history_columns &history_rows
-          &output_records &contact_columns &contact_rows;
+          &output_records &contact_columns &contact_rows &n_extra_fields
+              &integrator_state;
     }
   };
 
   /**
-   * Checkpoints of a quasi-static run: the distributed mesh and displacement
+   * Checkpoints of a run: the distributed mesh, the displacement and any
+   * further fields (the velocity of an explicit run)
    * (p4est and deal.II's SolutionTransfer, so a run may restart on a
    * different number of ranks) and the RunState (Boost serialization).
    *
@@ -47,17 +53,22 @@ namespace softgrasp
 
     void save(const dealii::parallel::distributed::Triangulation<dim> &tria,
               const SolidSystem<dim>                                  &system,
-              const RunState &state) const;
+              RunState                                                 state,
+              const std::vector<const dealii::TrilinosWrappers::MPI::Vector *>
+                  &extra = {}) const;
 
     /// True if a complete checkpoint exists.
     bool exists() const;
 
     /**
      * Load into @p tria (which holds the same coarse mesh as the saved run)
-     * and @p system (set up here); returns the saved RunState.
+     * and @p system (set up here); returns the saved RunState. The fields
+     * saved besides the displacement go into @p extra (owned entries).
      */
-    RunState load(dealii::parallel::distributed::Triangulation<dim> &tria,
-                  SolidSystem<dim> &system) const;
+    RunState
+    load(dealii::parallel::distributed::Triangulation<dim>  &tria,
+         SolidSystem<dim>                                   &system,
+         std::vector<dealii::TrilinosWrappers::MPI::Vector> &extra) const;
 
   private:
     std::string complete_directory() const;

@@ -26,6 +26,17 @@ namespace softgrasp
     iterative ///< CG (GMRES with follower loads) + Trilinos ML AMG
   };
 
+  /// Time integration of the solid ("Time/Integrator").
+  enum class TimeIntegrator
+  {
+    /// Implicit: static equilibrium at each load step (Newton), inertia
+    /// neglected; QuasiStaticSolver.
+    quasi_static,
+    /// Explicit central difference with lumped mass and inertia;
+    /// ExplicitSolver.
+    explicit_dynamic
+  };
+
   /// Finite element discretisation ("Finite element" subsection).
   struct DiscretizationParameters
   {
@@ -39,8 +50,10 @@ namespace softgrasp
   /// Load/time stepping ("Time" subsection).
   struct TimeParameters
   {
-    double       end_time      = 1.0;  ///< s
-    double       step_size     = 0.1;  ///< nominal step, s
+    TimeIntegrator integrator = TimeIntegrator::quasi_static;
+    double         end_time   = 1.0; ///< s
+    /// nominal load step (quasi-static) or record interval (explicit), s
+    double       step_size     = 0.1;
     double       minimum_step  = 1e-6; ///< smallest step after cut-backs, s
     unsigned int max_cut_backs = 8; ///< halvings of one step before giving up
 
@@ -101,6 +114,26 @@ namespace softgrasp
     void        parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /// Explicit central-difference integration ("Explicit dynamics").
+  struct ExplicitParameters
+  {
+    /// time step = factor x the critical step 2/omega_max; 1
+    double safety_factor = 0.8;
+    /// recompute the critical step every n steps (as the mesh deforms); 1
+    unsigned int stable_step_interval = 100;
+    /// > 0: fixed time step, s (checked against the critical step)
+    double fixed_time_step = 0;
+    /// > 0: scale nodal masses so the step is at least this, s
+    double mass_scaling_time_step = 0;
+    /// mass-proportional damping alpha, 1/s
+    double mass_damping = 0;
+    /// stop when the relative energy balance error exceeds this; 1
+    double energy_balance_limit = 0.05;
+
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void        parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   /// All solver settings; the materials, mesh and loads are read elsewhere.
   struct SolverParameters
   {
@@ -110,6 +143,7 @@ namespace softgrasp
     LinearSolverParameters   linear_solver;
     OutputParameters         output;
     CheckpointParameters     checkpoint;
+    ExplicitParameters       explicit_dynamics;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

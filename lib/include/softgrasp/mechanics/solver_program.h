@@ -1,5 +1,5 @@
-#ifndef softgrasp_mechanics_quasi_static_program_h
-#define softgrasp_mechanics_quasi_static_program_h
+#ifndef softgrasp_mechanics_solver_program_h
+#define softgrasp_mechanics_solver_program_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
@@ -8,33 +8,34 @@
 namespace softgrasp
 {
   /**
-   * The main() of a quasi-static solver program, shared by the examples:
+   * The main() of a solver program, shared by the examples:
    *
    *   program [--print-parameters] [file.prm]
    *
    * reads "Dimension" (2: plane strain, 3) and then the whole file with
-   * every declaration pass, runs QuasiStaticSolver<dim>, and turns input
+   * every declaration pass, runs the MechanicsSolver<dim> that
+   * 'Time/Integrator' names (quasi-static or explicit), and turns input
    * errors and solver failures into a message on stderr and exit code 1.
    * @p after_run, if given, is called on rank 0 and all ranks after a
-   * successful run with the solver (as QuasiStaticSolver<2> or <3>) to
+   * successful run with the solver (as MechanicsSolver<2> or <3>) to
    * report results; use the overloads below.
    *
    * MPI must be initialised by the caller (Utilities::MPI::MPI_InitFinalize).
    */
-  template <int dim> class QuasiStaticSolver;
+  template <int dim> class MechanicsSolver;
 
-  struct QuasiStaticProgram
+  struct SolverProgram
   {
-    std::string                                       default_parameter_file;
-    std::function<void(const QuasiStaticSolver<2> &)> report_2d;
-    std::function<void(const QuasiStaticSolver<3> &)> report_3d;
+    std::string                                     default_parameter_file;
+    std::function<void(const MechanicsSolver<2> &)> report_2d;
+    std::function<void(const MechanicsSolver<3> &)> report_3d;
 
     int run(int argc, char **argv) const;
 
     /// Read @p filename's "Dimension" entry (2 or 3).
     static unsigned int read_dimension(const std::string &filename);
 
-    /// Declare and read everything a QuasiStaticSolver<dim> needs.
+    /// Declare and read everything a MechanicsSolver<dim> needs.
     template <int dim>
     static void read_parameters(dealii::ParameterHandler &prm,
                                 const std::string        &filename);

@@ -2,8 +2,8 @@
 #include <fstream>
 #include <iostream>
 #include <softgrasp/base/input_error.h>
-#include <softgrasp/mechanics/quasi_static_program.h>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/mechanics/solver_program.h>
 #include <sstream>
 
 namespace softgrasp
@@ -22,7 +22,7 @@ namespace softgrasp
     }
   } // namespace
 
-  unsigned int QuasiStaticProgram::read_dimension(const std::string &filename)
+  unsigned int SolverProgram::read_dimension(const std::string &filename)
   {
     const std::string text = ParameterReader::file_text(filename);
     ParameterHandler  prm;
@@ -41,17 +41,17 @@ namespace softgrasp
   }
 
   template <int dim>
-  void QuasiStaticProgram::read_parameters(ParameterHandler  &prm,
-                                           const std::string &filename)
+  void SolverProgram::read_parameters(ParameterHandler  &prm,
+                                      const std::string &filename)
   {
     declare_dimension(prm);
-    QuasiStaticSolver<dim>::declare_parameters(prm);
+    MechanicsSolver<dim>::declare_parameters(prm);
     ParameterReader reader;
-    QuasiStaticSolver<dim>::add_passes(reader);
+    MechanicsSolver<dim>::add_passes(reader);
     reader.read_file(prm, filename);
   }
 
-  int QuasiStaticProgram::run(int argc, char **argv) const
+  int SolverProgram::run(int argc, char **argv) const
   {
     const MPI_Comm comm = MPI_COMM_WORLD;
     const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
@@ -99,7 +99,7 @@ namespace softgrasp
         else
         {
           declare_dimension(prm);
-          QuasiStaticSolver<2>::declare_parameters(prm);
+          MechanicsSolver<2>::declare_parameters(prm);
         }
         if (root)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
@@ -110,18 +110,18 @@ namespace softgrasp
       if (dim == 2)
       {
         read_parameters<2>(prm, filename);
-        QuasiStaticSolver<2> solver(comm, prm);
-        solver.run();
+        const auto solver = MechanicsSolver<2>::create(comm, prm);
+        solver->run();
         if (report_2d)
-          report_2d(solver);
+          report_2d(*solver);
       }
       else
       {
         read_parameters<3>(prm, filename);
-        QuasiStaticSolver<3> solver(comm, prm);
-        solver.run();
+        const auto solver = MechanicsSolver<3>::create(comm, prm);
+        solver->run();
         if (report_3d)
-          report_3d(solver);
+          report_3d(*solver);
       }
     }
     catch (const std::exception &e)
@@ -133,8 +133,8 @@ namespace softgrasp
     return 0;
   }
 
-  template void QuasiStaticProgram::read_parameters<2>(ParameterHandler &,
-                                                       const std::string &);
-  template void QuasiStaticProgram::read_parameters<3>(ParameterHandler &,
-                                                       const std::string &);
+  template void SolverProgram::read_parameters<2>(ParameterHandler &,
+                                                  const std::string &);
+  template void SolverProgram::read_parameters<3>(ParameterHandler &,
+                                                  const std::string &);
 } // namespace softgrasp

@@ -1,0 +1,106 @@
+#ifndef softgrasp_contact_contact_surface_h
+#define softgrasp_contact_contact_surface_h
+
+#include <array>
+#include <limits>
+#include <softgrasp/contact/contact_parameters.h>
+#include <softgrasp/contact/nodal_contact_law.h>
+#include <softgrasp/mechanics/solid_system.h>
+#include <softgrasp/rigid/rigid_body_set.h>
+#include <vector>
+
+namespace softgrasp
+{
+  /// The contact state of one slave node (shared by every enforcement).
+  template <int dim> struct ContactNode
+  {
+    std::array<dealii::types::global_dof_index, dim> dofs;
+    std::array<bool, dim>                            free{};
+    Eigen::Vector3d reference_position = Eigen::Vector3d::Zero(); ///< X (m)
+    /// Position (m) at the start of the current step.
+    Eigen::Vector3d last_converged = Eigen::Vector3d::Zero();
+    double          reference_area = 0; ///< D_j = int N_j dA, reference (m^2)
+    ContactStatus   status         = ContactStatus::inactive;
+    int             body           = -1; ///< nearest body (-1: none)
+    unsigned int    geom           = 0;
+    double          gap    = std::numeric_limits<double>::infinity(); ///< m
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero(); ///< rigid, outward
+    /// Contact force on the tissue node (N; N/m in 2D); the body receives
+    /// its negative.
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    Eigen::Vector3d slip  = Eigen::Vector3d::Zero(); ///< in the step (m)
+  };
+
+  /**
+   * The geometry half of contact between the slave surface of a deformable
+   * solid and moving rigid bodies: which nodes form the surface (owned
+   * nodes on the faces with the ids of 'Contact/Slave boundary ids'), their
+   * reference areas, where the rigid geoms are at a time, and the signed
+   * distance and outward normal of the nearest geom at a point. How the
+   * contact conditions are enforced is left to the derived classes
+   * (MortarContact: semi-smooth Newton in the implicit solver;
+   * ExplicitContact: forward-increment Lagrange multipliers in the explicit
+   * solver); ContactOutput reports both alike.
+   *
+   * In 2D, the plane problem lies in the world x-y plane (z = 0) and the
+   * rigid geoms must be invariant along z there.
+   */
+  template <int dim> class ContactSurface
+  {
+  public:
+    using Node = ContactNode<dim>;
+
+    ContactSurface(const ContactParameters &parameters,
+                   const RigidBodySet      &bodies);
+    virtual ~ContactSurface() = default;
+
+    /// Find the slave nodes of @p system (after its setup()).
+    virtual void setup(const SolidSystem<dim> &system);
+
+    /// Time (s) at which the rigid bodies are placed.
+    void   set_time(const double time);
+    double time() const;
+
+    /// The locally owned slave nodes.
+    const std::vector<Node> &nodes() const;
+    const RigidBodySet      &rigid_bodies() const;
+    bool is_slave_boundary(const dealii::types::boundary_id id) const;
+
+    /// Global numbers of closed and of slipping nodes at the last
+    /// evaluation.
+    unsigned int n_active() const;
+    unsigned int n_slip() const;
+
+  protected:
+    struct Proximity
+    {
+      int             body   = -1;
+      unsigned int    geom   = 0;
+      double          gap    = std::numeric_limits<double>::infinity(); ///< m
+      Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    };
+    /// The nearest geom to @p x (m) in the poses of poses_now.
+    Proximity nearest(const Eigen::Vector3d &x) const;
+    /// Signed distance and normal of geom (p.body, p.geom) at @p x.
+    Proximity       distance_to(const int              body,
+                                const unsigned int     geom,
+                                const Eigen::Vector3d &x) const;
+    Eigen::Vector3d normal_at(const Proximity       &p,
+                              const Eigen::Vector3d &x) const;
+    void            place_bodies(const double                    time,
+                                 std::vector<std::vector<Pose>> &poses) const;
+
+    const ContactParameters        parameters;
+    const RigidBodySet            &bodies;
+    MPI_Comm                       comm         = MPI_COMM_SELF;
+    double                         current_time = 0;
+    std::vector<std::vector<Pose>> poses_now;
+    std::vector<Node>              node_list;
+    /// Local dofs of each support point of a cell: [point][component].
+    std::vector<std::array<unsigned int, dim>> cell_nodes;
+    unsigned int                               active_count = 0;
+    unsigned int                               slip_count   = 0;
+  };
+} // namespace softgrasp
+
+#endif

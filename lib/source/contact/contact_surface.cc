@@ -1,0 +1,251 @@
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector_operation.h>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/contact/contact_surface.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  ContactSurface<dim>::ContactSurface(const ContactParameters &parameters,
+                                      const RigidBodySet      &bodies)
+      : parameters(parameters)
+      , bodies(bodies)
+  {
+  }
+
+  template <int dim>
+  void ContactSurface<dim>::setup(const SolidSystem<dim> &system)
+  {
+    comm                      = system.communicator();
+    const auto        &fe     = system.fe();
+    const auto        &dofs   = system.dof_handler();
+    const IndexSet    &owned  = system.locally_owned_dofs();
+    const IndexSet    &ghosts = system.locally_relevant_dofs();
+    const unsigned int n_pts  = fe.base_element(0).n_dofs_per_cell();
+    const unsigned int degree = fe.degree;
+    cell_nodes.assign(n_pts, {});
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+    {
+      const auto [c, k] = fe.system_to_component_index(i);
+      cell_nodes[k][c]  = i;
+    }
+
+    const std::set<types::boundary_id> slave(
+        parameters.slave_boundary_ids.begin(),
+        parameters.slave_boundary_ids.end());
+    const auto on_slave = [&](const auto &cell, const unsigned int f)
+    {
+      return cell->face(f)->at_boundary() &&
+             slave.count(cell->face(f)->boundary_id()) > 0;
+    };
+
+    // Reference nodal areas D_j = int N_j dA over the slave surface.
+    TrilinosWrappers::MPI::Vector area;
+    area.reinit(owned, ghosts, comm, true);
+    FEFaceValues<dim>                    face_values(system.mapping(),
+                                  fe,
+                                  QGauss<dim - 1>(degree + 1),
+                                  update_values | update_JxW_values);
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (on_slave(cell, f))
+          {
+            face_values.reinit(cell, f);
+            cell->get_dof_indices(indices);
+            for (unsigned int k = 0; k < n_pts; ++k)
+            {
+              const unsigned int i   = cell_nodes[k][0];
+              double             sum = 0;
+              for (const auto q : face_values.quadrature_point_indices())
+                sum += face_values.shape_value(i, q) * face_values.JxW(q);
+              area[indices[i]] += sum;
+            }
+          }
+    area.compress(VectorOperation::add);
+
+    // The owned nodes, found from owned and ghost cells.
+    FEValues<dim>                     support(system.mapping(),
+                          fe,
+                          Quadrature<dim>(fe.get_unit_support_points()),
+                          update_quadrature_points);
+    std::set<types::global_dof_index> seen;
+    node_list.clear();
+    for (const auto &cell : dofs.active_cell_iterators())
+    {
+      if (cell->is_artificial())
+        continue;
+      bool any = false;
+      for (const auto f : cell->face_indices())
+        any = any || on_slave(cell, f);
+      if (!any)
+        continue;
+      cell->get_dof_indices(indices);
+      support.reinit(cell);
+      for (const auto f : cell->face_indices())
+        if (on_slave(cell, f))
+          for (unsigned int k = 0; k < n_pts; ++k)
+          {
+            const unsigned int i = cell_nodes[k][0];
+            if (!fe.has_support_on_face(i, f) ||
+                !owned.is_element(indices[i]) || seen.count(indices[i]))
+              continue;
+            seen.insert(indices[i]);
+            Node node;
+            for (unsigned int c = 0; c < dim; ++c)
+              node.dofs[c] = indices[cell_nodes[k][c]];
+            const Point<dim> &X = support.quadrature_point(i);
+            for (unsigned int d = 0; d < dim; ++d)
+              node.reference_position[d] = X[d];
+            node.last_converged = node.reference_position;
+            node.reference_area = area[indices[i]];
+            if (!(node.reference_area > 0))
+              throw InputError(
+                  "The contact surface has a node with non-positive weight "
+                  "int N_j dA = " +
+                  std::to_string(node.reference_area) +
+                  "; the dual mortar basis needs positive weights. Fix: use "
+                  "Lagrange elements of degree 1 or 2 on the slave surface.");
+            node_list.push_back(node);
+          }
+    }
+    const unsigned int total =
+        Utilities::MPI::sum<unsigned int>(node_list.size(), comm);
+    if (total == 0)
+      throw InputError("The contact surface is empty: no boundary face has "
+                       "one of the ids in 'Contact/Slave boundary ids'. Fix: "
+                       "give the boundary ids of the surface that touches "
+                       "the rigid bodies.");
+  }
+
+  template <int dim> void ContactSurface<dim>::set_time(const double time)
+  {
+    current_time = time;
+  }
+
+  template <int dim>
+  void
+  ContactSurface<dim>::place_bodies(const double                    time,
+                                    std::vector<std::vector<Pose>> &poses) const
+  {
+    const auto &list = bodies.bodies();
+    poses.resize(list.size());
+    for (unsigned int b = 0; b < list.size(); ++b)
+    {
+      poses[b].resize(list[b].geoms().size());
+      for (unsigned int g = 0; g < list[b].geoms().size(); ++g)
+        poses[b][g] = list[b].geom_pose(g, time);
+    }
+  }
+
+  template <int dim>
+  Eigen::Vector3d ContactSurface<dim>::normal_at(const Proximity       &p,
+                                                 const Eigen::Vector3d &x) const
+  {
+    const Pose     &pose = poses_now[p.body][p.geom];
+    const auto     &geom = bodies.bodies()[p.body].geoms()[p.geom];
+    Eigen::Vector3d n =
+        pose.rotate_to_world(geom.shape->query(pose.to_local(x)).normal);
+    if (dim == 2)
+    {
+      n[2] = 0;
+      n.normalize();
+    }
+    return n;
+  }
+
+  template <int dim>
+  typename ContactSurface<dim>::Proximity
+  ContactSurface<dim>::nearest(const Eigen::Vector3d &x) const
+  {
+    Proximity   best;
+    const auto &list = bodies.bodies();
+    for (unsigned int b = 0; b < list.size(); ++b)
+      for (unsigned int g = 0; g < list[b].geoms().size(); ++g)
+      {
+        const Pose  &pose  = poses_now[b][g];
+        const Shape &shape = *list[b].geoms()[g].shape;
+        // The bounding sphere bounds the distance from below: skip geoms
+        // that cannot be nearer than the best so far.
+        if ((x - pose.position).norm() - shape.bounding_radius() >= best.gap)
+          continue;
+        const ShapeQuery q = shape.query(pose.to_local(x));
+        if (q.distance < best.gap)
+        {
+          best.body   = b;
+          best.geom   = g;
+          best.gap    = q.distance;
+          best.normal = pose.rotate_to_world(q.normal);
+        }
+      }
+    if (dim == 2 && best.body >= 0)
+    {
+      best.normal[2] = 0;
+      best.normal.normalize();
+    }
+    return best;
+  }
+
+  template <int dim>
+  typename ContactSurface<dim>::Proximity ContactSurface<dim>::distance_to(
+      const int body, const unsigned int geom, const Eigen::Vector3d &x) const
+  {
+    const Pose      &pose = poses_now[body][geom];
+    const ShapeQuery q =
+        bodies.bodies()[body].geoms()[geom].shape->query(pose.to_local(x));
+    Proximity p;
+    p.body   = body;
+    p.geom   = geom;
+    p.gap    = q.distance;
+    p.normal = pose.rotate_to_world(q.normal);
+    if (dim == 2)
+    {
+      p.normal[2] = 0;
+      p.normal.normalize();
+    }
+    return p;
+  }
+
+  template <int dim>
+  const std::vector<typename ContactSurface<dim>::Node> &
+  ContactSurface<dim>::nodes() const
+  {
+    return node_list;
+  }
+
+  template <int dim>
+  const RigidBodySet &ContactSurface<dim>::rigid_bodies() const
+  {
+    return bodies;
+  }
+
+  template <int dim>
+  bool ContactSurface<dim>::is_slave_boundary(const types::boundary_id id) const
+  {
+    for (const auto s : parameters.slave_boundary_ids)
+      if (s == id)
+        return true;
+    return false;
+  }
+
+  template <int dim> double ContactSurface<dim>::time() const
+  {
+    return current_time;
+  }
+
+  template <int dim> unsigned int ContactSurface<dim>::n_active() const
+  {
+    return active_count;
+  }
+
+  template <int dim> unsigned int ContactSurface<dim>::n_slip() const
+  {
+    return slip_count;
+  }
+
+  template class ContactSurface<2>;
+  template class ContactSurface<3>;
+} // namespace softgrasp

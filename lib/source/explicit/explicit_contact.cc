@@ -1,0 +1,150 @@
+#include <softgrasp/explicit/explicit_contact.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  ExplicitContact<dim>::ExplicitContact(const ContactParameters &parameters,
+                                        const RigidBodySet      &bodies,
+                                        TimerOutput             &timer)
+      : ContactSurface<dim>(parameters, bodies)
+      , timer(timer)
+  {
+  }
+
+  template <int dim>
+  void ExplicitContact<dim>::setup(const SolidSystem<dim> &system)
+  {
+    ContactSurface<dim>::setup(system);
+    const auto &constraints = system.constraint_set();
+    for (auto &node : node_list)
+      for (unsigned int c = 0; c < dim; ++c)
+        node.free[c] = !constraints.is_constrained(node.dofs[c]);
+    tolerance = 1e-12 * system.length_scale();
+    poses_now.clear();
+  }
+
+  template <int dim>
+  typename ExplicitContact<dim>::Proximity
+  ExplicitContact<dim>::project(const int              body,
+                                const unsigned int     geom,
+                                const Eigen::Vector3d &free_mask,
+                                Eigen::Vector3d       &x) const
+  {
+    Proximity q = this->distance_to(body, geom, x);
+    // Newton on the signed distance along the free part of the normal;
+    // exact in one step for flat surfaces, quadratic for curved ones.
+    for (unsigned int it = 0; it < 10 && std::abs(q.gap) > tolerance; ++it)
+    {
+      const Eigen::Vector3d direction = q.normal.cwiseProduct(free_mask);
+      const double          along     = q.normal.dot(direction);
+      if (along < 1e-6)
+        break; // the free components cannot reach the surface
+      x -= q.gap / along * direction;
+      q = this->distance_to(body, geom, x);
+    }
+    return q;
+  }
+
+  template <int dim>
+  void ExplicitContact<dim>::enforce(const double      time,
+                                     const double      dt,
+                                     const double      h,
+                                     const VectorType &mass,
+                                     const VectorType &u_old,
+                                     VectorType       &u)
+  {
+    TimerOutput::Scope scope(timer, "contact");
+    if (poses_now.empty())
+      this->place_bodies(time - dt, poses_now);
+    poses_old.swap(poses_now);
+    this->set_time(time);
+    this->place_bodies(time, poses_now);
+    const double mu     = parameters.friction_coefficient;
+    unsigned int active = 0, slipping = 0;
+    double       worst = 0;
+    for (auto &node : node_list)
+    {
+      Eigen::Vector3d x = node.reference_position, x_old = x;
+      Eigen::Vector3d mask = Eigen::Vector3d::Zero();
+      double          m    = 0;
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        x[c] += u(node.dofs[c]);
+        x_old[c] += u_old(node.dofs[c]);
+        if (node.free[c])
+        {
+          mask[c] = 1;
+          m       = mass(node.dofs[c]);
+        }
+      }
+      node.last_converged = x_old;
+      node.force.setZero();
+      node.slip.setZero();
+      const Proximity p = this->nearest(x);
+      node.body         = p.body;
+      node.geom         = p.geom;
+      node.gap          = p.gap;
+      node.normal       = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
+      node.status       = ContactStatus::inactive;
+      if (p.body < 0 || p.gap >= 0 || m == 0)
+        continue;
+
+      // Normal multiplier: back onto the surface.
+      const Eigen::Vector3d x_trial = x;
+      Proximity             q       = project(p.body, p.geom, mask, x);
+      const double          k       = m / (dt * h); // N/m
+      const double          f_n     = k * q.normal.dot(x - x_trial);
+      // Tangential multiplier: stay at the surface point of t^n, carried
+      // along by the body; Coulomb's cone bounds it.
+      const Pose           &now     = poses_now[p.body][p.geom];
+      const Pose           &old     = poses_old[p.body][p.geom];
+      const Eigen::Vector3d x_stick = now.to_world(old.to_local(x_old));
+      Eigen::Vector3d       d       = x_stick - x;
+      d -= q.normal * q.normal.dot(d);
+      d           = d.cwiseProduct(mask);
+      node.status = ContactStatus::stick;
+      if (mu == 0 || !(f_n > 0))
+      {
+        d.setZero();
+        node.status = ContactStatus::slip;
+      }
+      else if (k * d.norm() > mu * f_n)
+      {
+        d *= mu * f_n / (k * d.norm());
+        node.status = ContactStatus::slip;
+      }
+      if (d.squaredNorm() > 0)
+      {
+        x += d;
+        q = project(p.body, p.geom, mask, x); // curved surfaces
+      }
+      for (unsigned int c = 0; c < dim; ++c)
+        if (node.free[c])
+          u(node.dofs[c]) = x[c] - node.reference_position[c];
+      node.force  = k * (x - x_trial);
+      node.gap    = q.gap;
+      node.normal = q.normal;
+      node.slip   = x - x_stick;
+      node.slip -= q.normal * q.normal.dot(node.slip);
+      worst = std::max(worst, -q.gap);
+      ++active;
+      if (node.status == ContactStatus::slip)
+        ++slipping;
+    }
+    double counts[2] = {double(active), double(slipping)};
+    Utilities::MPI::sum(counts, comm, counts);
+    this->active_count = static_cast<unsigned int>(counts[0]);
+    this->slip_count   = static_cast<unsigned int>(counts[1]);
+    penetration        = Utilities::MPI::max(worst, comm);
+  }
+
+  template <int dim> double ExplicitContact<dim>::max_penetration() const
+  {
+    return penetration;
+  }
+
+  template class ExplicitContact<2>;
+  template class ExplicitContact<3>;
+} // namespace softgrasp

@@ -1,0 +1,407 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <iomanip>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/explicit/explicit_solver.h>
+#include <softgrasp/explicit/lumped_mass.h>
+#include <sstream>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  ExplicitSolver<dim>::ExplicitSolver(MPI_Comm comm, ParameterHandler &prm)
+      : MechanicsSolver<dim>(comm, prm)
+  {
+    this->n_restored_fields = 1; // the half-step velocity
+  }
+
+  template <int dim>
+  std::unique_ptr<ContactSurface<dim>>
+  ExplicitSolver<dim>::make_contact(const double /*shear_modulus*/)
+  {
+    auto contact = std::make_unique<ExplicitContact<dim>>(
+        this->contact_parameters, this->bodies, this->timers);
+    contact->setup(*this->solid);
+    explicit_contact = contact.get();
+    return contact;
+  }
+
+  template <int dim> void ExplicitSolver<dim>::check_loads() const
+  {
+    const auto &bcs = this->boundary_conditions;
+    if (!bcs.tractions.empty() || !bcs.pressures.empty() || bcs.has_gravity())
+      throw InputError(
+          "The explicit solver ('Time/Integrator = explicit dynamic') takes "
+          "prescribed displacements and contact with rigid bodies; "
+          "tractions, pressures and gravity are not offered by it yet. Fix: "
+          "use 'Time/Integrator = quasi-static', or apply the load through a "
+          "prescribed displacement or a rigid body.");
+    if (this->solver_parameters.discretization.formulation !=
+        Formulation::displacement)
+      throw InputError(
+          "The explicit solver uses the displacement formulation; "
+          "'Finite element/Formulation' is set to the mixed u-p-J one. Fix: "
+          "set 'Formulation = displacement' (nearly incompressible tissue "
+          "then needs a finer mesh or Q2), or use 'Time/Integrator = "
+          "quasi-static'.");
+  }
+
+  template <int dim> void ExplicitSolver<dim>::setup_integrator()
+  {
+    const auto &dofs = this->solid->dof_handler();
+    hanging.clear();
+    hanging.reinit(this->solid->locally_relevant_dofs());
+    DoFTools::make_hanging_node_constraints(dofs, hanging);
+    hanging.close();
+    force = std::make_unique<InternalForceOperator<dim>>(
+        this->solid->mapping(), dofs, hanging, this->material_library);
+    force->initialize_dof_vector(mass);
+    compute_lumped_mass(
+        this->solid->mapping(), dofs, hanging, this->material_library, mass);
+    physical_mass = mass.l1_norm() / dim;
+    added_mass    = 0;
+    const double target =
+        this->solver_parameters.explicit_dynamics.mass_scaling_time_step;
+    if (target > 0)
+      scale_mass(target);
+
+    setup_prescribed();
+    const auto &constraints = this->solid->constraint_set();
+    fixed                   = IndexSet(dofs.n_dofs());
+    for (const auto i : this->solid->locally_owned_dofs())
+      if (constraints.is_constrained(i))
+        fixed.add_index(i);
+    fixed.compress();
+    integrator = std::make_unique<CentralDifference<dim>>(
+        *force,
+        mass,
+        fixed,
+        this->solver_parameters.explicit_dynamics.mass_damping);
+    integrator->set_balance_limit(
+        this->solver_parameters.explicit_dynamics.energy_balance_limit);
+    integrator->prescribe = [this](const double t, VectorType &u)
+    { prescribe(t, u); };
+    if (explicit_contact)
+      integrator->constrain = [this](const double      t,
+                                     const double      dt,
+                                     const double      h,
+                                     const VectorType &u_old,
+                                     VectorType       &u)
+      { explicit_contact->enforce(t, dt, h, mass, u_old, u); };
+  }
+
+  template <int dim>
+  void ExplicitSolver<dim>::scale_mass(const double target_step)
+  {
+    // Element estimate of the stable step: the smallest node spacing over
+    // the dilatational wave speed, / sqrt(dim) for the element's highest
+    // mode. Elements below the target get their density scaled by
+    // (target / estimate)^2.
+    const auto         &tria   = this->triangulation;
+    const unsigned int  degree = this->solver_parameters.discretization.degree;
+    std::vector<double> factor(tria.n_active_cells(), 1.0);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const double c = this->material_library.get(cell->material_id())
+                             .reference_wave_speed();
+        const double estimate = cell->minimum_vertex_distance() /
+                                (degree * std::sqrt(double(dim)) * c);
+        if (estimate < target_step)
+          factor[cell->active_cell_index()] =
+              std::pow(target_step / estimate, 2);
+      }
+    compute_lumped_mass(this->solid->mapping(),
+                        this->solid->dof_handler(),
+                        hanging,
+                        this->material_library,
+                        mass,
+                        factor);
+    added_mass = 100 * (mass.l1_norm() / dim - physical_mass) / physical_mass;
+  }
+
+  template <int dim> void ExplicitSolver<dim>::setup_prescribed()
+  {
+    const auto &dofs  = this->solid->dof_handler();
+    const auto &owned = this->solid->locally_owned_dofs();
+    std::map<types::global_dof_index, Point<dim>> points;
+    DoFTools::map_dofs_to_support_points(this->solid->mapping(), dofs, points);
+    prescribed.clear();
+    std::set<types::global_dof_index> claimed;
+    for (const auto &d : this->boundary_conditions.dirichlet)
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        if (!d.components[c])
+          continue;
+        std::vector<bool> mask(dim, false);
+        mask[c]                = true;
+        const IndexSet on_face = DoFTools::extract_boundary_dofs(
+            dofs, ComponentMask(mask), {d.boundary_id});
+        for (const auto i : on_face)
+          if (owned.is_element(i) && !hanging.is_constrained(i) &&
+              claimed.insert(i).second)
+            prescribed.push_back({i, c, points.at(i), d.displacement.get()});
+      }
+  }
+
+  template <int dim>
+  void ExplicitSolver<dim>::prescribe(const double time, VectorType &u)
+  {
+    this->boundary_conditions.set_time(time);
+    for (const auto &p : prescribed)
+      u(p.index) = p.function->value(p.point, p.component);
+    if (hanging.n_constraints() > 0)
+      hanging.distribute(u);
+  }
+
+  template <int dim> void ExplicitSolver<dim>::update_system(const double time)
+  {
+    const VectorType &u        = integrator->displacement();
+    auto             &solution = this->solid->solution();
+    for (const auto i : this->solid->locally_owned_dofs())
+      solution[i] = u(i);
+    solution.compress(VectorOperation::insert);
+    this->solid->update_ghosts();
+    // The reactions f_int - f_ext at the supports, by the quasi-static
+    // assembly of the same state (once per record, not per step).
+    this->boundary_conditions.set_time(time);
+    this->solid->update_constraints();
+    this->solid->assemble(false);
+  }
+
+  template <int dim> void ExplicitSolver<dim>::record_state(const double time)
+  {
+    update_system(time);
+    const auto          e        = integrator->energies();
+    std::vector<double> trailing = {e.kinetic,
+                                    e.internal,
+                                    e.external_work,
+                                    e.support_work,
+                                    e.contact_work,
+                                    e.damping,
+                                    e.balance_error,
+                                    integrator->min_J(),
+                                    added_mass};
+    if (explicit_contact)
+    {
+      trailing.push_back(explicit_contact->n_active());
+      trailing.push_back(explicit_contact->n_slip());
+      trailing.push_back(worst_penetration);
+    }
+    this->record(
+        time, {time_step, double(steps), this->progress.elapsed()}, trailing);
+    worst_penetration = 0;
+  }
+
+  template <int dim> void ExplicitSolver<dim>::save_checkpoint()
+  {
+    TrilinosWrappers::MPI::Vector velocity(this->solid->locally_owned_dofs(),
+                                           this->comm);
+    const VectorType             &v = integrator->velocity_half_step();
+    for (const auto i : this->solid->locally_owned_dofs())
+      velocity[i] = v(i);
+    velocity.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector ghosted(this->solid->locally_owned_dofs(),
+                                          this->solid->locally_relevant_dofs(),
+                                          this->comm);
+    ghosted                      = velocity;
+    this->state.integrator_state = integrator->state_scalars();
+    this->state.integrator_state.push_back(double(steps));
+    this->write_checkpoint({&ghosted});
+  }
+
+  template <int dim>
+  void ExplicitSolver<dim>::write_last_good_state(const double time)
+  {
+    ++this->state.step;
+    this->state.time = time;
+    record_state(time);
+    this->write_fields(time);
+    save_checkpoint();
+  }
+
+  template <int dim>
+  void ExplicitSolver<dim>::fail(const std::string &cause,
+                                 const std::string &fix)
+  {
+    const double t = integrator->time();
+    write_last_good_state(t);
+    std::ostringstream message;
+    message << "Explicit step " << steps + 1 << " (from t = " << t
+            << " s, dt = " << time_step << " s) was refused: " << cause
+            << ". The last good state (t = " << t << " s) was written to '"
+            << this->solver_parameters.output.directory
+            << "' (VTU and checkpoint). Fix: " << fix;
+    throw SolverFailure(message.str());
+  }
+
+  template <int dim>
+  void ExplicitSolver<dim>::print_progress(const double time,
+                                           const double dt) const
+  {
+    const auto   e   = integrator->energies();
+    const double end = this->solver_parameters.time.end_time;
+    this->pcout << "Record " << std::setw(4) << this->state.step
+                << "  t = " << std::setw(10) << time << " s (" << std::setw(3)
+                << std::lround(100 * time / end) << "%)  steps " << steps
+                << "  dt = " << std::setprecision(3) << dt
+                << " s  E_kin = " << e.kinetic << " J  balance "
+                << 100 * e.balance_error << "%";
+    if (explicit_contact)
+      this->pcout << "  contact " << explicit_contact->n_active() << " ("
+                  << explicit_contact->n_slip() << " slip)";
+    this->pcout << std::setprecision(6) << "  wall "
+                << ProgressReporter::format_duration(this->progress.elapsed())
+                << "  ETA "
+                << ProgressReporter::format_duration(this->progress.eta(time))
+                << std::endl;
+  }
+
+  template <int dim> void ExplicitSolver<dim>::run()
+  {
+    check_loads();
+    const auto              &ep   = this->solver_parameters.explicit_dynamics;
+    const auto              &time = this->solver_parameters.time;
+    std::vector<std::string> trailing = {"kinetic_energy",
+                                         "internal_energy",
+                                         "external_work",
+                                         "support_work",
+                                         "contact_work",
+                                         "damping_energy",
+                                         "energy_balance_error",
+                                         "min_J",
+                                         "added_mass_percent"};
+    if (!this->contact_parameters.slave_boundary_ids.empty())
+      for (const char *name :
+           {"contact_active_nodes", "contact_slip_nodes", "max_penetration"})
+        trailing.push_back(name);
+    explicit_contact = nullptr;
+    this->prepare_run({"time_step", "time_steps", "wall_time"}, trailing);
+    setup_integrator();
+    this->print_summary("displacement formulation, explicit dynamic");
+
+    VectorType u, v;
+    force->initialize_dof_vector(u);
+    force->initialize_dof_vector(v);
+    const bool resume = this->solver_parameters.checkpoint.resume;
+    for (const auto i : this->solid->locally_owned_dofs())
+      u(i) = this->solid->solution()[i];
+    if (resume)
+    {
+      for (const auto i : this->solid->locally_owned_dofs())
+        v(i) = this->restored_fields[0][i];
+      auto scalars = this->state.integrator_state;
+      if (scalars.empty())
+        throw InputError("The checkpoint has no explicit integrator state. "
+                         "Fix: resume with the 'Time/Integrator' of the run "
+                         "that wrote it.");
+      steps = static_cast<unsigned long>(scalars.back());
+      scalars.pop_back();
+      integrator->restore(u, v, scalars);
+    }
+    else
+    {
+      steps = 0;
+      integrator->initialize(0.0, u, v);
+      record_state(0.0);
+      this->write_fields(0.0);
+    }
+
+    critical_step = integrator->critical_time_step(40);
+    time_step     = ep.fixed_time_step > 0 ? ep.fixed_time_step
+                                           : ep.safety_factor * critical_step;
+    if (ep.fixed_time_step > critical_step)
+      throw InputError(
+          "'Explicit dynamics/Fixed time step' (" +
+          std::to_string(ep.fixed_time_step) +
+          " s) exceeds the critical time step of this mesh and material (" +
+          std::to_string(critical_step) +
+          " s): the run would blow up. Fix: set it to 0 (the stable step) "
+          "or below the critical step.");
+    this->pcout << "Explicit dynamics: critical step " << critical_step
+                << " s, step " << time_step << " s, added mass " << added_mass
+                << " %, about "
+                << std::lround((time.end_time - integrator->time()) / time_step)
+                << " steps." << std::endl;
+
+    this->progress.start(integrator->time(), time.end_time);
+    const double interval = time.step_size;
+    while (this->state.time < time.end_time * (1 - 1e-12))
+    {
+      const double t_record =
+          std::min(time.end_time, (this->state.step + 1) * interval);
+      while (integrator->time() < t_record - 1e-9 * time_step)
+      {
+        const double remaining = t_record - integrator->time();
+        const double dt = remaining / std::ceil(remaining / time_step - 1e-9);
+        using Result    = typename CentralDifference<dim>::StepResult;
+        switch (integrator->step(dt))
+        {
+        case Result::ok:
+          break;
+        case Result::not_finite:
+          fail("a displacement or acceleration became NaN or infinite",
+               "reduce 'Explicit dynamics/Safety factor' (or 'Fixed time "
+               "step') and check the material parameters.");
+        case Result::inverted:
+          fail("an element would invert (det F <= 0)",
+               "load more slowly (a longer 'Time/End time'), refine the "
+               "mesh where it is compressed most, or add 'Explicit "
+               "dynamics/Mass damping'.");
+        case Result::unbalanced:
+          fail("the energy balance error would exceed 'Explicit "
+               "dynamics/Energy balance limit' = " +
+                   std::to_string(ep.energy_balance_limit) +
+                   ": the integration is unstable",
+               "reduce 'Explicit dynamics/Safety factor' or 'Fixed time "
+               "step', and check that the rigid bodies do not move "
+               "faster than the tissue can follow.");
+        }
+        ++steps;
+        if (explicit_contact)
+          worst_penetration =
+              std::max(worst_penetration, explicit_contact->max_penetration());
+        if (ep.fixed_time_step == 0 && steps % ep.stable_step_interval == 0)
+        {
+          critical_step = integrator->critical_time_step(8);
+          time_step     = ep.safety_factor * critical_step;
+        }
+      }
+      ++this->state.step;
+      this->state.time      = t_record;
+      this->state.step_size = time_step;
+      record_state(t_record);
+      this->stopped = this->stop_criterion && this->stop_criterion();
+      const bool last =
+          this->stopped || this->state.time >= time.end_time * (1 - 1e-12);
+      const unsigned int vtu = this->solver_parameters.output.vtu_interval;
+      if ((vtu > 0 && this->state.step % vtu == 0) || last)
+        this->write_fields(t_record);
+      const unsigned int every = this->solver_parameters.checkpoint.interval;
+      if (every > 0 && this->state.step % every == 0)
+        save_checkpoint();
+      print_progress(t_record, time_step);
+      if (this->stopped)
+      {
+        this->pcout << "Stop criterion met at t = " << t_record << " s."
+                    << std::endl;
+        break;
+      }
+    }
+    this->timers.print_wall_time_statistics(this->comm);
+  }
+
+  template <int dim> double ExplicitSolver<dim>::added_mass_percent() const
+  {
+    return added_mass;
+  }
+
+  template <int dim> unsigned long ExplicitSolver<dim>::n_time_steps() const
+  {
+    return steps;
+  }
+
+  template class ExplicitSolver<2>;
+  template class ExplicitSolver<3>;
+} // namespace softgrasp

@@ -1,0 +1,341 @@
+#include <deal.II/base/multithread_info.h>
+#include <filesystem>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/explicit/explicit_solver.h>
+#include <softgrasp/io/hdf5_history.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/mechanics/quasi_static_solver.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  void MechanicsSolver<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    SolverParameters::declare_parameters(prm);
+    MeshFactory<dim>::declare_parameters(prm);
+    MaterialLibrary::declare_parameters(prm);
+    BoundaryConditions<dim>::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    RigidBodySet::declare_parameters(prm);
+  }
+
+  template <int dim>
+  void MechanicsSolver<dim>::add_passes(ParameterReader &reader)
+  {
+    MaterialLibrary::add_passes(reader);
+    BoundaryConditions<dim>::add_passes(reader);
+    RigidBodySet::add_passes(reader);
+  }
+
+  template <int dim>
+  std::unique_ptr<MechanicsSolver<dim>>
+  MechanicsSolver<dim>::create(MPI_Comm comm, ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    const bool is_explicit = prm.get("Integrator") == "explicit dynamic";
+    prm.leave_subsection();
+    if (is_explicit)
+      return std::make_unique<ExplicitSolver<dim>>(comm, prm);
+    return std::make_unique<QuasiStaticSolver<dim>>(comm, prm);
+  }
+
+  namespace
+  {
+    template <typename T> T parsed(ParameterHandler &prm)
+    {
+      T object;
+      object.parse_parameters(prm);
+      return object;
+    }
+  } // namespace
+
+  template <int dim>
+  MechanicsSolver<dim>::MechanicsSolver(MPI_Comm comm, ParameterHandler &prm)
+      : comm(comm)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+      , verbose_out(std::cout, false)
+      , solver_parameters(parsed<SolverParameters>(prm))
+      , mesh(parsed<MeshFactory<dim>>(prm))
+      , material_library(parsed<MaterialLibrary>(prm))
+      , boundary_conditions(parsed<BoundaryConditions<dim>>(prm))
+      , contact_parameters(parsed<ContactParameters>(prm))
+      , bodies(parsed<RigidBodySet>(prm))
+      , timers(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+      , triangulation(comm)
+      , field_output(solver_parameters.output.directory,
+                     solver_parameters.output.base_name)
+      , history_writer(solver_parameters.output.directory + "/" +
+                       solver_parameters.output.base_name + "_history.csv")
+      , contact_writer(solver_parameters.output.directory + "/" +
+                       solver_parameters.output.base_name + "_contact.csv")
+      , checkpoint(solver_parameters.output.directory)
+  {
+    verbose_out.set_condition(solver_parameters.output.verbose &&
+                              Utilities::MPI::this_mpi_process(comm) == 0);
+    for (const auto &coordinates : solver_parameters.output.monitor_points)
+    {
+      if (coordinates.size() != dim)
+        throw InputError("Parameter 'Output/Monitor points' has a point with " +
+                         std::to_string(coordinates.size()) +
+                         " coordinates in a " + std::to_string(dim) +
+                         "D problem. Fix: give " + std::to_string(dim) +
+                         " coordinates per point (m).");
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = coordinates[d];
+      monitor_points.push_back(p);
+    }
+  }
+
+  template <int dim>
+  void
+  MechanicsSolver<dim>::prepare_run(const std::vector<std::string> &leading,
+                                    const std::vector<std::string> &trailing)
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::filesystem::create_directories(solver_parameters.output.directory);
+    MPI_Barrier(comm);
+    const unsigned int mapping_degree =
+        mesh.has_curved_boundary() ? solver_parameters.discretization.degree
+                                   : 1;
+    solid             = std::make_unique<SolidSystem<dim>>(triangulation,
+                                               material_library,
+                                               boundary_conditions,
+                                               solver_parameters,
+                                               mapping_degree,
+                                               timers);
+    stopped           = false;
+    last_output_step  = static_cast<unsigned int>(-1);
+    const bool resume = solver_parameters.checkpoint.resume;
+    {
+      TimerOutput::Scope scope(timers, "setup");
+      mesh.create_coarse_mesh(triangulation);
+      if (resume)
+      {
+        state = checkpoint.load(triangulation, *solid, restored_fields);
+        if (restored_fields.size() != n_restored_fields)
+          throw InputError(
+              "The checkpoint in '" + solver_parameters.output.directory +
+              "' holds " + std::to_string(restored_fields.size()) +
+              " field(s) besides the displacement, this solver needs " +
+              std::to_string(n_restored_fields) +
+              ": it was written by the other time integrator. Fix: resume "
+              "with the 'Time/Integrator' of the run that wrote it.");
+      }
+      else
+      {
+        mesh.refine(triangulation);
+        solid->setup();
+      }
+    }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        material_library.get(cell->material_id()); // throws if unmapped
+
+    const bool has_surface = !contact_parameters.slave_boundary_ids.empty();
+    if (has_surface && bodies.empty())
+      throw InputError("'Contact/Slave boundary ids' is set but there is no "
+                       "rigid body. Fix: name the bodies in 'Rigid "
+                       "bodies/Names' (or add them in code), or leave the "
+                       "slave boundary ids empty.");
+    if (!has_surface && !bodies.empty())
+      throw InputError("Rigid bodies are given but no contact surface. Fix: "
+                       "set 'Contact/Slave boundary ids' to the boundary ids "
+                       "of the surface the bodies touch.");
+    contact_surface.reset();
+    surface_output.reset();
+    if (has_surface)
+    {
+      double shear_modulus = 0;
+      for (const auto id : material_library.material_ids())
+        shear_modulus = std::max(
+            shear_modulus, material_library.get(id).initial_shear_modulus());
+      contact_surface = make_contact(shear_modulus);
+      surface_output  = std::make_unique<ContactOutput<dim>>(*contact_surface);
+      surface_output->setup(*solid);
+    }
+
+    if (resume)
+    {
+      history_writer.columns = state.history_columns;
+      history_writer.rows    = state.history_rows;
+      contact_writer.columns = state.contact_columns;
+      contact_writer.rows    = state.contact_rows;
+      field_output.records   = state.output_records;
+      pcout << "Resumed from the checkpoint at step " << state.step
+            << ", t = " << state.time << " s." << std::endl;
+      return;
+    }
+    state                            = RunState();
+    state.step_size                  = solver_parameters.time.step_size;
+    std::vector<std::string> columns = {"step", "time"};
+    columns.insert(columns.end(), leading.begin(), leading.end());
+    const char *axes[] = {"x", "y", "z"};
+    for (const auto id : boundary_conditions.reaction_boundary_ids())
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back("reaction_" + std::to_string(id) + "_" + axes[d]);
+    for (unsigned int p = 0; p < monitor_points.size(); ++p)
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back("u" + std::to_string(p) + "_" + axes[d]);
+    columns.insert(columns.end(), trailing.begin(), trailing.end());
+    history_writer.set_columns(columns);
+    history_writer.rows.clear();
+    if (surface_output)
+    {
+      std::vector<std::string> contact_columns = {"step", "time"};
+      for (const auto &name : surface_output->history_columns())
+        contact_columns.push_back(name);
+      contact_writer.set_columns(contact_columns);
+      contact_writer.rows.clear();
+    }
+  }
+
+  template <int dim>
+  void
+  MechanicsSolver<dim>::print_summary(const std::string &discretization) const
+  {
+    pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells, "
+          << solid->n_dofs() << " displacement dofs (Q"
+          << solver_parameters.discretization.degree << ", " << discretization
+          << "), " << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s) x "
+          << MultithreadInfo::n_threads() << " thread(s)." << std::endl;
+    for (const auto id : material_library.material_ids())
+      pcout << "Material " << static_cast<unsigned>(id) << ": "
+            << material_library.get(id).summary() << std::endl;
+  }
+
+  template <int dim>
+  void MechanicsSolver<dim>::record(const double               time,
+                                    const std::vector<double> &leading,
+                                    const std::vector<double> &trailing)
+  {
+    std::vector<double> row = {double(state.step), time};
+    row.insert(row.end(), leading.begin(), leading.end());
+    for (const auto &[id, force] : solid->reactions())
+      for (unsigned int d = 0; d < dim; ++d)
+        row.push_back(force[d]);
+    for (const auto &u : solid->point_displacements(monitor_points))
+      for (unsigned int d = 0; d < dim; ++d)
+        row.push_back(u[d]);
+    row.insert(row.end(), trailing.begin(), trailing.end());
+    history_writer.add_row(row);
+    if (surface_output)
+    {
+      std::vector<double> contact_row = {double(state.step), time};
+      for (const double v : surface_output->history_values(*solid))
+        contact_row.push_back(v);
+      contact_writer.add_row(contact_row);
+    }
+    TimerOutput::Scope scope(timers, "output");
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      history_writer.write();
+      if (surface_output)
+      {
+        contact_writer.write();
+        write_history_hdf5(contact_writer,
+                           solver_parameters.output.directory + "/" +
+                               solver_parameters.output.base_name +
+                               "_contact.h5",
+                           "softgrasp contact history 1",
+                           dim);
+      }
+    }
+  }
+
+  template <int dim> void MechanicsSolver<dim>::write_fields(const double time)
+  {
+    if (last_output_step == state.step)
+      return;
+    TimerOutput::Scope scope(timers, "output");
+    solid->update_ghosts();
+    typename FieldOutput<dim>::ExtraFields extra;
+    if (surface_output)
+      extra = [this](DataOut<dim> &data_out)
+      { surface_output->add_fields(*solid, data_out); };
+    field_output.write(
+        *solid, material_library, time, state.n_outputs++, extra);
+    last_output_step = state.step;
+  }
+
+  template <int dim>
+  void MechanicsSolver<dim>::write_checkpoint(
+      const std::vector<const TrilinosWrappers::MPI::Vector *> &extra)
+  {
+    TimerOutput::Scope scope(timers, "checkpoint");
+    state.history_columns = history_writer.columns;
+    state.history_rows    = history_writer.rows;
+    state.output_records  = field_output.records;
+    state.contact_columns = contact_writer.columns;
+    state.contact_rows    = contact_writer.rows;
+    solid->update_ghosts();
+    checkpoint.save(triangulation, *solid, state, extra);
+  }
+
+  template <int dim>
+  void MechanicsSolver<dim>::set_stop_criterion(std::function<bool()> f)
+  {
+    stop_criterion = std::move(f);
+  }
+
+  template <int dim> bool MechanicsSolver<dim>::stopped_by_criterion() const
+  {
+    return stopped;
+  }
+
+  template <int dim>
+  const SolidSystem<dim> &MechanicsSolver<dim>::system() const
+  {
+    return *solid;
+  }
+
+  template <int dim> const HistoryWriter &MechanicsSolver<dim>::history() const
+  {
+    return history_writer;
+  }
+
+  template <int dim>
+  const MaterialLibrary &MechanicsSolver<dim>::materials() const
+  {
+    return material_library;
+  }
+
+  template <int dim>
+  const SolverParameters &MechanicsSolver<dim>::parameters() const
+  {
+    return solver_parameters;
+  }
+
+  template <int dim> RigidBodySet &MechanicsSolver<dim>::rigid_bodies()
+  {
+    return bodies;
+  }
+
+  template <int dim>
+  const ContactSurface<dim> *MechanicsSolver<dim>::contact() const
+  {
+    return contact_surface.get();
+  }
+
+  template <int dim>
+  const ContactOutput<dim> *MechanicsSolver<dim>::contact_output() const
+  {
+    return surface_output.get();
+  }
+
+  template <int dim>
+  const HistoryWriter &MechanicsSolver<dim>::contact_history() const
+  {
+    return contact_writer;
+  }
+
+  template <int dim> TimerOutput &MechanicsSolver<dim>::timer()
+  {
+    return timers;
+  }
+
+  template class MechanicsSolver<2>;
+  template class MechanicsSolver<3>;
+} // namespace softgrasp
