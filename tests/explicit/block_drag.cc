@@ -40,10 +40,10 @@ main(int argc, char **argv)
   auto solver = make_solver<3>(prm.str());
   solver->run();
 
-  const auto       &h            = solver->contact_history();
-  const auto       &history      = solver->history();
-  const std::string p            = "floor/plane:";
-  bool              sliding_seen = false;
+  const auto       &h             = solver->contact_history();
+  const auto       &history       = solver->history();
+  const std::string p             = "floor/plane:";
+  bool              sliding_seen  = false;
   double            worst_balance = 0, worst_penetration = 0;
   for (std::size_t row = 1; row < h.rows.size(); ++row)
   {
@@ -53,9 +53,11 @@ main(int argc, char **argv)
     const double active   = h.value(row, p + "active_nodes");
     const double slipping = h.value(row, p + "slip_nodes");
     const bool   sliding  = slipping == active && active > 0 && t > 0.1;
+    // Before the drag the friction forces cancel (up to round-off).
+    const double ratio = F_t / (mu * N) < 1e-10 ? 0 : F_t / (mu * N);
     dealii::deallog << "t = " << t << " s: N = " << N
-                    << " N, F_t/(mu N) = " << F_t / (mu * N) << ", slipping "
-                    << slipping << " of " << active << " nodes" << std::endl;
+                    << " N, F_t/(mu N) = " << ratio << ", slipping " << slipping
+                    << " of " << active << " nodes" << std::endl;
     SG_CHECK(N > 0, "the floor is pressed");
     SG_CHECK(F_t <= mu * N * (1 + 1e-9), "F_t <= mu N");
     if (sliding)
@@ -70,10 +72,8 @@ main(int argc, char **argv)
   }
   SG_CHECK(sliding_seen, "the block slides in the end");
   const std::size_t last = history.rows.size() - 1;
-  dealii::deallog << "time steps: " << history.value(last, "time_steps")
-                  << ", energy balance error below 1 %: "
-                  << (worst_balance < 0.01)
-                  << ", penetration below 1e-12 m: "
+  dealii::deallog << "energy balance error below 1 %: "
+                  << (worst_balance < 0.01) << ", penetration below 1e-12 m: "
                   << (worst_penetration < 1e-12) << std::endl;
   SG_CHECK(worst_balance < 0.01, "energy balance within 1 %");
   SG_CHECK(worst_penetration < 1e-12, "no penetration after any step");

@@ -37,14 +37,6 @@ namespace softgrasp
           "tractions, pressures and gravity are not offered by it yet. Fix: "
           "use 'Time/Integrator = quasi-static', or apply the load through a "
           "prescribed displacement or a rigid body.");
-    if (this->solver_parameters.discretization.formulation !=
-        Formulation::displacement)
-      throw InputError(
-          "The explicit solver uses the displacement formulation; "
-          "'Finite element/Formulation' is set to the mixed u-p-J one. Fix: "
-          "set 'Formulation = displacement' (nearly incompressible tissue "
-          "then needs a finer mesh or Q2), or use 'Time/Integrator = "
-          "quasi-static'.");
   }
 
   template <int dim> void ExplicitSolver<dim>::setup_integrator()
@@ -280,6 +272,13 @@ namespace softgrasp
     this->prepare_run({"time_step", "time_steps", "wall_time"}, trailing);
     setup_integrator();
     this->print_summary("displacement formulation, explicit dynamic");
+    if (this->solver_parameters.discretization.formulation !=
+        Formulation::displacement)
+      this->pcout << "Note: 'Finite element/Formulation = mixed u-p-J' applies "
+                     "to the quasi-static solver; the explicit solver uses "
+                     "the displacement formulation (nearly incompressible "
+                     "tissue needs Q2 or a finer mesh there)."
+                  << std::endl;
 
     VectorType u, v;
     force->initialize_dof_vector(u);

@@ -28,7 +28,9 @@ namespace softgrasp
    * undone, the last good state is written (VTU and checkpoint), and the
    * run stops with a SolverFailure naming the cause and the fix.
    *
-   * Loads: prescribed displacements (Dirichlet, as functions of t) and
+   * Displacement formulation only (a mixed u-p-J setting is noted and
+   * applies to the quasi-static solver). Loads: prescribed displacements
+   * (Dirichlet, as functions of t) and
    * contact with the rigid bodies. Tractions, pressures and gravity are
    * not offered here yet (an InputError says so).
    */
