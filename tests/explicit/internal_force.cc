@@ -125,9 +125,11 @@ namespace
       local                    = 0;
       for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
-        Tensor<2, 3> F = PlaneStrain::to_3d<dim>(grad_u[q]);
-        for (unsigned int d = 0; d < 3; ++d)
-          F[d][d] += 1;
+        // F = I + grad u in the plane, then the plane-strain slice
+        Tensor<2, dim> F_dim = grad_u[q];
+        for (unsigned int d = 0; d < dim; ++d)
+          F_dim[d][d] += 1;
+        const Tensor<2, 3> F = PlaneStrain::to_3d<dim>(F_dim);
         Material::Response r;
         material.evaluate_material(
             F,
@@ -187,6 +189,12 @@ namespace
     LinearAlgebra::distributed::Vector<double> u, f;
     op.initialize_dof_vector(u);
     op.initialize_dof_vector(f);
+    // The undeformed state is stress free: zero forces and energy (in 2D
+    // this checks that the plane-strain F_33 is 1, not 1 + 1).
+    const auto at_rest = op.apply(u, f);
+    SG_CHECK(f.linfty_norm() < 1e-12 && std::abs(at_rest.energy) < 1e-12 &&
+                 std::abs(at_rest.min_J - 1) < 1e-12,
+             "no force at rest");
     Tensor<2, dim> H;
     H[0][0] = 0.2;
     H[0][1] = 0.05;
@@ -196,9 +204,10 @@ namespace
     VectorTools::interpolate(mapping, dofs, Homogeneous<dim>(H), u);
     op.apply(u, f);
 
-    Tensor<2, 3> F = PlaneStrain::to_3d<dim>(H);
-    for (unsigned int d = 0; d < 3; ++d)
-      F[d][d] += 1;
+    Tensor<2, dim> F_dim = H;
+    for (unsigned int d = 0; d < dim; ++d)
+      F_dim[d][d] += 1;
+    const Tensor<2, 3> F = PlaneStrain::to_3d<dim>(F_dim);
     Material::Response r;
     material->evaluate_material(F, {}, false, r);
     const Tensor<2, 3> P = F * Tensor<2, 3>(r.stress);

@@ -121,10 +121,12 @@ namespace softgrasp
           materials.get(data.get_cell_iterator(cell, 0)->material_id());
       for (unsigned int q = 0; q < phi.n_q_points; ++q)
       {
-        Tensor<2, 3, VectorizedDouble> F =
-            PlaneStrain::to_3d<dim>(phi.get_gradient(q));
-        for (unsigned int d = 0; d < 3; ++d)
-          F[d][d] += 1.0;
+        // F = I + grad u in the plane, then the plane-strain slice
+        // (F_33 = 1 in 2D)
+        Tensor<2, dim, VectorizedDouble> F_dim = phi.get_gradient(q);
+        for (unsigned int d = 0; d < dim; ++d)
+          F_dim[d][d] += 1.0;
+        Tensor<2, 3, VectorizedDouble> F = PlaneStrain::to_3d<dim>(F_dim);
         const VectorizedDouble J = determinant(F);
         for (unsigned int lane = 0; lane < width; ++lane)
         {
