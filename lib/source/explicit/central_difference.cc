@@ -321,6 +321,19 @@ namespace softgrasp
 
   template <int dim>
   const typename CentralDifference<dim>::VectorType &
+  CentralDifference<dim>::highest_mode() const
+  {
+    return eigenvector;
+  }
+
+  template <int dim>
+  void CentralDifference<dim>::set_highest_mode(const VectorType &mode)
+  {
+    eigenvector = mode;
+  }
+
+  template <int dim>
+  const typename CentralDifference<dim>::VectorType &
   CentralDifference<dim>::contact_forces() const
   {
     return f_contact;

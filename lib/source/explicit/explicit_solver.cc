@@ -1,3 +1,4 @@
+#include <array>
 #include <deal.II/dofs/dof_tools.h>
 #include <iomanip>
 #include <softgrasp/base/input_error.h>
@@ -13,7 +14,7 @@ namespace softgrasp
   ExplicitSolver<dim>::ExplicitSolver(MPI_Comm comm, ParameterHandler &prm)
       : MechanicsSolver<dim>(comm, prm)
   {
-    this->n_restored_fields = 1; // the half-step velocity
+    this->n_restored_fields = 2; // half-step velocity, highest mode
   }
 
   template <int dim>
@@ -188,19 +189,27 @@ namespace softgrasp
 
   template <int dim> void ExplicitSolver<dim>::save_checkpoint()
   {
-    TrilinosWrappers::MPI::Vector velocity(this->solid->locally_owned_dofs(),
-                                           this->comm);
-    const VectorType             &v = integrator->velocity_half_step();
-    for (const auto i : this->solid->locally_owned_dofs())
-      velocity[i] = v(i);
-    velocity.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector ghosted(this->solid->locally_owned_dofs(),
-                                          this->solid->locally_relevant_dofs(),
+    // Ghosted Trilinos copies of the half-step velocity and the highest
+    // mode (the power iteration's warm start).
+    std::array<TrilinosWrappers::MPI::Vector, 2> fields;
+    const std::array<const VectorType *, 2>      sources = {
+             {&integrator->velocity_half_step(), &integrator->highest_mode()}};
+    for (unsigned int k = 0; k < 2; ++k)
+    {
+      TrilinosWrappers::MPI::Vector owned(this->solid->locally_owned_dofs(),
                                           this->comm);
-    ghosted                      = velocity;
+      for (const auto i : this->solid->locally_owned_dofs())
+        owned[i] = (*sources[k])(i);
+      owned.compress(VectorOperation::insert);
+      fields[k].reinit(this->solid->locally_owned_dofs(),
+                       this->solid->locally_relevant_dofs(),
+                       this->comm);
+      fields[k] = owned;
+    }
     this->state.integrator_state = integrator->state_scalars();
-    this->state.integrator_state.push_back(double(steps));
-    this->write_checkpoint({&ghosted});
+    this->state.integrator_state.insert(this->state.integrator_state.end(),
+                                        {double(steps), time_step});
+    this->write_checkpoint({&fields[0], &fields[1]});
   }
 
   template <int dim>
@@ -284,20 +293,29 @@ namespace softgrasp
     force->initialize_dof_vector(u);
     force->initialize_dof_vector(v);
     const bool resume = this->solver_parameters.checkpoint.resume;
+    this->progress.start(this->state.time, time.end_time);
     for (const auto i : this->solid->locally_owned_dofs())
       u(i) = this->solid->solution()[i];
     if (resume)
     {
+      VectorType mode;
+      force->initialize_dof_vector(mode);
       for (const auto i : this->solid->locally_owned_dofs())
-        v(i) = this->restored_fields[0][i];
+      {
+        v(i)    = this->restored_fields[0][i];
+        mode(i) = this->restored_fields[1][i];
+      }
       auto scalars = this->state.integrator_state;
-      if (scalars.empty())
+      if (scalars.size() < 2)
         throw InputError("The checkpoint has no explicit integrator state. "
                          "Fix: resume with the 'Time/Integrator' of the run "
                          "that wrote it.");
+      time_step = scalars.back();
+      scalars.pop_back();
       steps = static_cast<unsigned long>(scalars.back());
       scalars.pop_back();
       integrator->restore(u, v, scalars);
+      integrator->set_highest_mode(mode);
     }
     else
     {
@@ -307,9 +325,15 @@ namespace softgrasp
       this->write_fields(0.0);
     }
 
-    critical_step = integrator->critical_time_step(40);
-    time_step     = ep.fixed_time_step > 0 ? ep.fixed_time_step
-                                           : ep.safety_factor * critical_step;
+    J_at_estimate = integrator->min_J();
+    if (!resume) // a restart continues with the saved step
+    {
+      critical_step = integrator->critical_time_step(40);
+      time_step     = ep.fixed_time_step > 0 ? ep.fixed_time_step
+                                             : ep.safety_factor * critical_step;
+    }
+    else
+      critical_step = time_step / ep.safety_factor;
     if (ep.fixed_time_step > critical_step)
       throw InputError(
           "'Explicit dynamics/Fixed time step' (" +
@@ -324,7 +348,6 @@ namespace softgrasp
                 << std::lround((time.end_time - integrator->time()) / time_step)
                 << " steps." << std::endl;
 
-    this->progress.start(integrator->time(), time.end_time);
     const double interval = time.step_size;
     while (this->state.time < time.end_time * (1 - 1e-12))
     {
@@ -361,8 +384,15 @@ namespace softgrasp
         if (explicit_contact)
           worst_penetration =
               std::max(worst_penetration, explicit_contact->max_penetration());
-        if (ep.fixed_time_step == 0 && steps % ep.stable_step_interval == 0)
+        // The critical step shrinks as elements are compressed: recompute
+        // it every 'Stable step interval' steps, and as soon as the
+        // smallest det F has changed by 5 % since the last estimate.
+        const bool deformed =
+            std::abs(integrator->min_J() - J_at_estimate) > 0.05;
+        if (ep.fixed_time_step == 0 &&
+            (steps % ep.stable_step_interval == 0 || deformed))
         {
+          J_at_estimate = integrator->min_J();
           critical_step = integrator->critical_time_step(8);
           time_step     = ep.safety_factor * critical_step;
         }

@@ -127,7 +127,7 @@ namespace softgrasp
         for (unsigned int d = 0; d < dim; ++d)
           F_dim[d][d] += 1.0;
         Tensor<2, 3, VectorizedDouble> F = PlaneStrain::to_3d<dim>(F_dim);
-        const VectorizedDouble J = determinant(F);
+        const VectorizedDouble         J = determinant(F);
         for (unsigned int lane = 0; lane < width; ++lane)
         {
           if (lane < lanes)

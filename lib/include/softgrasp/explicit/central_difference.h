@@ -108,6 +108,10 @@ namespace softgrasp
     void restore(const VectorType          &u,
                  const VectorType          &v_half,
                  const std::vector<double> &scalars);
+    /// The power iteration's current estimate of the highest mode (saved
+    /// with a checkpoint so that a restart continues identically).
+    const VectorType &highest_mode() const;
+    void              set_highest_mode(const VectorType &mode);
 
     double            time() const;
     const VectorType &displacement() const;

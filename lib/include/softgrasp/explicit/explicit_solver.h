@@ -86,7 +86,8 @@ namespace softgrasp
     double                                      time_step         = 0; ///< s
     double                                      critical_step     = 0; ///< s
     double                                      worst_penetration = 0; ///< m
-    unsigned long                               steps             = 0;
+    double J_at_estimate = 1; ///< smallest det F at the last critical step
+    unsigned long steps  = 0;
   };
 } // namespace softgrasp
 
