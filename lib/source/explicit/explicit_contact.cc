@@ -30,18 +30,21 @@ namespace softgrasp
   ExplicitContact<dim>::project(const int              body,
                                 const unsigned int     geom,
                                 const Eigen::Vector3d &free_mask,
-                                Eigen::Vector3d       &x) const
+                                Eigen::Vector3d       &x,
+                                const double           target_gap) const
   {
     Proximity q = this->distance_to(body, geom, x);
     // Newton on the signed distance along the free part of the normal;
     // exact in one step for flat surfaces, quadratic for curved ones.
-    for (unsigned int it = 0; it < 10 && std::abs(q.gap) > tolerance; ++it)
+    for (unsigned int it = 0;
+         it < 10 && std::abs(q.gap - target_gap) > tolerance;
+         ++it)
     {
       const Eigen::Vector3d direction = q.normal.cwiseProduct(free_mask);
       const double          along     = q.normal.dot(direction);
       if (along < 1e-6)
         break; // the free components cannot reach the surface
-      x -= q.gap / along * direction;
+      x -= (q.gap - target_gap) / along * direction;
       q = this->distance_to(body, geom, x);
     }
     return q;
@@ -64,8 +67,15 @@ namespace softgrasp
     const double mu     = parameters.friction_coefficient;
     unsigned int active = 0, slipping = 0;
     double       worst = 0;
-    for (auto &node : node_list)
+    // What is left of the initial overlaps: they shrink linearly to zero.
+    const double left = steps_done < relaxation
+                            ? 1.0 - double(steps_done + 1) / relaxation
+                            : 0.0;
+    ++steps_done;
+    for (unsigned int j = 0; j < node_list.size(); ++j)
     {
+      auto           &node    = node_list[j];
+      const double    allowed = allowance.empty() ? 0.0 : left * allowance[j];
       Eigen::Vector3d x = node.reference_position, x_old = x;
       Eigen::Vector3d mask = Eigen::Vector3d::Zero();
       double          m    = 0;
@@ -88,14 +98,14 @@ namespace softgrasp
       node.gap          = p.gap;
       node.normal       = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
       node.status       = ContactStatus::inactive;
-      if (p.body < 0 || p.gap >= 0 || m == 0)
+      if (p.body < 0 || p.gap >= -allowed || m == 0)
         continue;
 
       // Normal multiplier: back onto the surface.
       const Eigen::Vector3d x_trial = x;
-      Proximity             q       = project(p.body, p.geom, mask, x);
-      const double          k       = m / (dt * h); // N/m
-      const double          f_n     = k * q.normal.dot(x - x_trial);
+      Proximity             q   = project(p.body, p.geom, mask, x, -allowed);
+      const double          k   = m / (dt * h); // N/m
+      const double          f_n = k * q.normal.dot(x - x_trial);
       // Tangential multiplier: stay at the surface point of t^n, carried
       // along by the body; Coulomb's cone bounds it.
       const Pose           &now     = poses_now[p.body][p.geom];
@@ -118,7 +128,7 @@ namespace softgrasp
       if (d.squaredNorm() > 0)
       {
         x += d;
-        q = project(p.body, p.geom, mask, x); // curved surfaces
+        q = project(p.body, p.geom, mask, x, -allowed); // curved surfaces
       }
       for (unsigned int c = 0; c < dim; ++c)
         if (node.free[c])
@@ -128,7 +138,7 @@ namespace softgrasp
       node.normal = q.normal;
       node.slip   = x - x_stick;
       node.slip -= q.normal * q.normal.dot(node.slip);
-      worst = std::max(worst, -q.gap);
+      worst = std::max(worst, -q.gap - allowed);
       ++active;
       if (node.status == ContactStatus::slip)
         ++slipping;
@@ -138,6 +148,34 @@ namespace softgrasp
     this->active_count = static_cast<unsigned int>(counts[0]);
     this->slip_count   = static_cast<unsigned int>(counts[1]);
     penetration        = Utilities::MPI::max(worst, comm);
+  }
+
+  template <int dim>
+  std::pair<unsigned int, double> ExplicitContact<dim>::relax_initial_overlap(
+      const double time, const VectorType &u, const unsigned int steps)
+  {
+    this->set_time(time);
+    this->place_bodies(time, poses_now);
+    allowance.assign(node_list.size(), 0.0);
+    relaxation           = steps;
+    steps_done           = 0;
+    unsigned int inside  = 0;
+    double       deepest = 0;
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const auto     &node = node_list[j];
+      Eigen::Vector3d x    = node.reference_position;
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] += u(node.dofs[c]);
+      const Proximity p = this->nearest(x);
+      if (p.body < 0 || p.gap >= 0)
+        continue;
+      allowance[j] = -p.gap;
+      deepest      = std::max(deepest, -p.gap);
+      ++inside;
+    }
+    return {Utilities::MPI::sum(inside, comm),
+            Utilities::MPI::max(deepest, comm)};
   }
 
   template <int dim> double ExplicitContact<dim>::max_penetration() const

@@ -1,6 +1,7 @@
 #include <array>
 #include <deal.II/dofs/dof_tools.h>
 #include <iomanip>
+#include <limits>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/explicit/explicit_solver.h>
 #include <softgrasp/explicit/lumped_mass.h>
@@ -54,11 +55,6 @@ namespace softgrasp
         this->solid->mapping(), dofs, hanging, this->material_library, mass);
     physical_mass = mass.l1_norm() / dim;
     added_mass    = 0;
-    const double target =
-        this->solver_parameters.explicit_dynamics.mass_scaling_time_step;
-    if (target > 0)
-      scale_mass(target);
-
     setup_prescribed();
     const auto &constraints = this->solid->constraint_set();
     fixed                   = IndexSet(dofs.n_dofs());
@@ -82,28 +78,43 @@ namespace softgrasp
                                      const VectorType &u_old,
                                      VectorType       &u)
       { explicit_contact->enforce(t, dt, h, mass, u_old, u); };
+    const double target =
+        this->solver_parameters.explicit_dynamics.mass_scaling_time_step;
+    if (target > 0)
+      scale_mass(target);
   }
 
   template <int dim>
   void ExplicitSolver<dim>::scale_mass(const double target_step)
   {
-    // Element estimate of the stable step: the smallest node spacing over
-    // the dilatational wave speed, / sqrt(dim) for the element's highest
-    // mode. Elements below the target get their density scaled by
-    // (target / estimate)^2.
-    const auto         &tria   = this->triangulation;
-    const unsigned int  degree = this->solver_parameters.discretization.degree;
-    std::vector<double> factor(tria.n_active_cells(), 1.0);
+    // Element estimates dt_e = k h_e / c_e (h_e the smallest vertex
+    // distance, c_e the dilatational wave speed), calibrated by k so that
+    // the smallest equals the critical step of the unscaled mesh (power
+    // iteration). Elements below the target get their density scaled by
+    // (target / dt_e)^2; the scaled mesh's critical step is then measured
+    // again by the caller.
+    const double        critical = integrator->critical_time_step(40);
+    const auto         &tria     = this->triangulation;
+    std::vector<double> estimate(tria.n_active_cells(), 0.0);
+    double              smallest = std::numeric_limits<double>::max();
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
       {
         const double c = this->material_library.get(cell->material_id())
                              .reference_wave_speed();
-        const double estimate = cell->minimum_vertex_distance() /
-                                (degree * std::sqrt(double(dim)) * c);
-        if (estimate < target_step)
-          factor[cell->active_cell_index()] =
-              std::pow(target_step / estimate, 2);
+        estimate[cell->active_cell_index()] =
+            cell->minimum_vertex_distance() / c;
+        smallest = std::min(smallest, estimate[cell->active_cell_index()]);
+      }
+    smallest              = Utilities::MPI::min(smallest, this->comm);
+    const double        k = critical / smallest;
+    std::vector<double> factor(tria.n_active_cells(), 1.0);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const double dt_e = k * estimate[cell->active_cell_index()];
+        if (dt_e < target_step)
+          factor[cell->active_cell_index()] = std::pow(target_step / dt_e, 2);
       }
     compute_lumped_mass(this->solid->mapping(),
                         this->solid->dof_handler(),
@@ -320,6 +331,17 @@ namespace softgrasp
     else
     {
       steps = 0;
+      if (explicit_contact)
+      {
+        const auto [inside, overlap] =
+            explicit_contact->relax_initial_overlap(0.0, u, 100);
+        if (inside > 0)
+          this->pcout << "Initial overlap: " << inside
+                      << " contact node(s) start inside a rigid body (up to "
+                      << overlap
+                      << " m); they are pushed out over the first 100 steps."
+                      << std::endl;
+      }
       integrator->initialize(0.0, u, v);
       record_state(0.0);
       this->write_fields(0.0);

@@ -58,6 +58,20 @@ namespace softgrasp
                  const VectorType &u_old,
                  VectorType       &u);
 
+    /**
+     * Nodes that start inside a body at @p time (e.g. a grasp recorded by
+     * a soft-contact simulator) keep their initial overlap as an allowance
+     * that shrinks linearly to zero over the next @p relaxation_steps
+     * steps, so the overlap is pushed out gradually instead of by one
+     * impulsive step (which would excite the mesh's highest modes).
+     * Returns the number of such nodes and the largest overlap (m), on all
+     * ranks.
+     */
+    std::pair<unsigned int, double>
+    relax_initial_overlap(const double       time,
+                          const VectorType  &u,
+                          const unsigned int relaxation_steps);
+
     /// Largest penetration (m, >= 0) over all nodes after the last
     /// enforce(), on all ranks.
     double max_penetration() const;
@@ -69,16 +83,20 @@ namespace softgrasp
     using ContactSurface<dim>::parameters;
     using ContactSurface<dim>::comm;
 
-    /// Move @p x (free components only, @p free_mask) onto the surface of
-    /// geom (body, geom) along its normal; returns the final proximity.
+    /// Move @p x (free components only, @p free_mask) along the normal of
+    /// geom (body, geom) until its gap is @p target_gap (m, <= 0); returns
+    /// the final proximity.
     Proximity project(const int              body,
                       const unsigned int     geom,
                       const Eigen::Vector3d &free_mask,
-                      Eigen::Vector3d       &x) const;
+                      Eigen::Vector3d       &x,
+                      const double           target_gap = 0) const;
 
     dealii::TimerOutput           &timer;
     std::vector<std::vector<Pose>> poses_old;
-    double                         tolerance   = 0; ///< m
+    double                         tolerance = 0; ///< m
+    std::vector<double>            allowance;     ///< initial overlap, m
+    unsigned int                   relaxation = 0, steps_done = 0;
     double                         penetration = 0; ///< m
   };
 } // namespace softgrasp
