@@ -1,0 +1,141 @@
+// Benchmark: whole explicit steps of ExplicitSolver (central difference,
+// matrix-free internal forces, forward-increment contact with a rigid
+// sphere pressed into the top of a neo-Hookean block, mass damping), for Q1
+// and Q2 at about 20k, 200k and 1M displacement DoFs.
+//
+// Reports per case: DoFs, cells, steps, time per step, DoF-steps per second
+// (in total over all ranks), time per element per step, the share of the
+// step spent in contact, the time of one matrix-based (FEValues) residual
+// assembly of the same mesh for comparison, and the peak resident memory
+// per DoF. The timing leaves out the set-up and the first record: it is
+// the wall time between the first and the last record over the steps in
+// between. Results in doc/benchmarks.md.
+//
+// Run: ./explicit_step [max DoFs, default 1.2e6]
+//      mpirun -np 2 ./explicit_step
+#include <deal.II/base/mpi.h>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <softgrasp/base/parameter_reader.h>
+#include <softgrasp/mechanics/mechanics_solver.h>
+#include <sstream>
+
+using namespace dealii;
+
+namespace
+{
+  double peak_memory_mb()
+  {
+    std::ifstream status("/proc/self/status");
+    std::string   line;
+    while (std::getline(status, line))
+      if (line.rfind("VmHWM:", 0) == 0)
+        return std::stod(line.substr(6)) / 1024.0;
+    return 0;
+  }
+
+  /// A 20 mm cube block, a sphere (R = 10 mm) pressed 0.2 mm into its top
+  /// over the run; about @p steps steps of the stable size.
+  std::string
+  prm(const unsigned int n, const unsigned int degree, const unsigned int steps)
+  {
+    const double L = 0.02, mu = 10e3, nu = 0.45, rho = 1000;
+    const double c = std::sqrt(2 * mu * (1 - nu) / (1 - 2 * nu) / rho);
+    // Q1: critical step about h / (c sqrt 3); Q2 about half that.
+    const double dt = 0.8 * L / n / degree / (c * std::sqrt(3.0)) / degree;
+    const double T  = steps * dt;
+    std::ostringstream s;
+    s << "subsection Mesh\n set Type = block\n subsection Block\n"
+      << "  set Lower corner = 0, 0, -0.02\n  set Upper corner = 0.02, 0.02, "
+         "0\n"
+      << "  set Subdivisions = " << n << ", " << n << ", " << n
+      << "\n end\nend\n"
+      << "subsection Finite element\n set Polynomial degree = " << degree
+      << "\n set Formulation = displacement\nend\n"
+      << "subsection Materials\n set Material ids = 0\n subsection Material 0\n"
+      << "  set Model = neo-Hookean\n  set Density = " << rho
+      << "\n  subsection neo-Hookean\n   set Shear modulus = " << mu
+      << "\n  end\n  subsection Volumetric\n   set Poisson's ratio = " << nu
+      << "\n  end\n end\nend\n"
+      << "subsection Boundary conditions\n set Dirichlet boundary ids = 4\n"
+      << " subsection Dirichlet boundary 4\n  set Components = x, y, z\n end\n"
+      << "end\n"
+      << "subsection Contact\n set Slave boundary ids = 5\n"
+      << " set Friction coefficient = 0.3\nend\n"
+      << "subsection Rigid bodies\n set Names = indenter\n"
+      << " subsection Body indenter\n  set Geom names = ball\n"
+      << "  set Trajectory = 0: 0.01, 0.01, 0.01, 1, 0, 0, 0; " << T
+      << ": 0.01, 0.01, 0.0098, 1, 0, 0, 0\n"
+      << "  subsection Geom ball\n   set Type = sphere\n   set Size = 0.01\n"
+      << "  end\n end\nend\n"
+      << "subsection Time\n set Integrator = explicit dynamic\n"
+      << " set End time = " << T << "\n set Time step = " << T / 4 << "\nend\n"
+      << "subsection Explicit dynamics\n set Mass damping = 100\n"
+      << " set Stable step interval = 1000\nend\n"
+      << "subsection Output\n set Directory = explicit-step-output\n"
+      << " set VTU interval = 0\n set Verbose = false\nend\n";
+    return s.str();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+  const bool   root     = Utilities::MPI::this_mpi_process(comm) == 0;
+  const double max_dofs = argc > 1 ? std::stod(argv[1]) : 1.2e6;
+  if (root)
+    std::cout << "element,dofs,cells,steps,ms_per_step,dof_steps_per_s,"
+                 "us_per_cell_step,contact_share,ms_residual_assembly,"
+                 "peak_kB_per_dof\n";
+  for (const unsigned int degree : {1u, 2u})
+    for (const unsigned int n_q1 : {18u, 40u, 68u})
+    {
+      const unsigned int n    = n_q1 / degree;
+      const double       dofs = 3.0 * std::pow(degree * n + 1, 3);
+      if (dofs > max_dofs)
+        continue;
+      const unsigned int steps = dofs > 5e5 ? 100 : 400;
+      ParameterHandler   handler;
+      softgrasp::MechanicsSolver<3>::declare_parameters(handler);
+      softgrasp::ParameterReader reader;
+      softgrasp::MechanicsSolver<3>::add_passes(reader);
+      reader.read_string(handler, prm(n, degree, steps), "benchmark");
+      auto solver = softgrasp::MechanicsSolver<3>::create(comm, handler);
+      std::streambuf *silenced = std::cout.rdbuf(nullptr);
+      solver->run();
+      std::cout.rdbuf(silenced);
+      const auto       &h    = solver->history();
+      const std::size_t last = h.rows.size() - 1;
+      const double wall = h.value(last, "wall_time") - h.value(1, "wall_time");
+      const double taken =
+          h.value(last, "time_steps") - h.value(1, "time_steps");
+      const auto times =
+          solver->timer().get_summary_data(TimerOutput::total_wall_time);
+      const double per_step = wall / taken;
+      const double contact  = times.at("contact") / h.value(last, "time_steps");
+      // One matrix-based residual assembly of the same state, for
+      // comparison: "residual" holds one per record (5 records).
+      const double assembly = times.at("residual") / h.rows.size();
+      const double memory = Utilities::MPI::sum(peak_memory_mb(), comm) * 1024 /
+                            solver->system().n_dofs();
+      if (root)
+        std::cout << "Q" << degree << "," << solver->system().n_dofs() << ","
+                  << solver->system()
+                         .dof_handler()
+                         .get_triangulation()
+                         .n_global_active_cells()
+                  << "," << taken << "," << 1e3 * per_step << ","
+                  << solver->system().n_dofs() / per_step << ","
+                  << 1e6 * per_step /
+                         solver->system()
+                             .dof_handler()
+                             .get_triangulation()
+                             .n_global_active_cells() *
+                         Utilities::MPI::n_mpi_processes(comm)
+                  << "," << contact / per_step << "," << 1e3 * assembly << ","
+                  << memory << std::endl;
+    }
+}
