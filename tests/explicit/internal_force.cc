@@ -202,7 +202,19 @@ namespace
     if (dim == 3)
       H[2][2] = -0.05;
     VectorTools::interpolate(mapping, dofs, Homogeneous<dim>(H), u);
-    op.apply(u, f);
+    const auto homogeneous = op.apply(u, f);
+
+    // Mean dilatation (u-p-J with one pressure per element) is exact for
+    // a homogeneous deformation: J_e = J, the same forces and energy.
+    InternalForceOperator<dim> mean(mapping, dofs, none, library, true);
+    LinearAlgebra::distributed::Vector<double> f_mean;
+    mean.initialize_dof_vector(f_mean);
+    const auto mean_result = mean.apply(u, f_mean);
+    f_mean -= f;
+    SG_CHECK(f_mean.linfty_norm() < 1e-12 * f.linfty_norm() &&
+                 std::abs(mean_result.energy - homogeneous.energy) <
+                     1e-12 * homogeneous.energy,
+             "mean dilatation equals the standard form when J is uniform");
 
     Tensor<2, dim> F_dim = H;
     for (unsigned int d = 0; d < dim; ++d)

@@ -48,8 +48,10 @@ namespace softgrasp
     hanging.reinit(this->solid->locally_relevant_dofs());
     DoFTools::make_hanging_node_constraints(dofs, hanging);
     hanging.close();
+    const bool mixed = this->solver_parameters.discretization.formulation ==
+                       Formulation::mixed_upJ;
     force = std::make_unique<InternalForceOperator<dim>>(
-        this->solid->mapping(), dofs, hanging, this->material_library);
+        this->solid->mapping(), dofs, hanging, this->material_library, mixed);
     force->initialize_dof_vector(mass);
     compute_lumped_mass(
         this->solid->mapping(), dofs, hanging, this->material_library, mass);
@@ -291,14 +293,15 @@ namespace softgrasp
     explicit_contact = nullptr;
     this->prepare_run({"time_step", "time_steps", "wall_time"}, trailing);
     setup_integrator();
-    this->print_summary("displacement formulation, explicit dynamic");
-    if (this->solver_parameters.discretization.formulation !=
-        Formulation::displacement)
-      this->pcout << "Note: 'Finite element/Formulation = mixed u-p-J' applies "
-                     "to the quasi-static solver; the explicit solver uses "
-                     "the displacement formulation (nearly incompressible "
-                     "tissue needs Q2 or a finer mesh there)."
-                  << std::endl;
+    const bool mixed = this->solver_parameters.discretization.formulation ==
+                       Formulation::mixed_upJ;
+    const bool q1 = this->solver_parameters.discretization.degree == 1;
+    this->print_summary(
+        mixed ? (q1 ? "mean dilatation u-p-J (Q1-P0, as the quasi-static "
+                      "solver), explicit dynamic"
+                    : "mean dilatation u-p-J (Q2-P0; the quasi-static "
+                      "solver uses Q2-P1), explicit dynamic")
+              : "displacement formulation, explicit dynamic");
 
     VectorType u, v;
     force->initialize_dof_vector(u);

@@ -1,3 +1,4 @@
+#include <array>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
@@ -58,9 +59,11 @@ namespace softgrasp
       const Mapping<dim>              &mapping,
       const DoFHandler<dim>           &dofs,
       const AffineConstraints<double> &constraints,
-      const MaterialLibrary           &materials)
+      const MaterialLibrary           &materials,
+      const bool                       mean_dilatation)
       : materials(materials)
       , degree(dofs.get_fe().degree)
+      , mean_dilatation(mean_dilatation)
   {
     if (degree != 1 && degree != 2)
       throw InputError("The explicit solver's matrix-free internal forces "
@@ -119,15 +122,17 @@ namespace softgrasp
       const unsigned int lanes = data.n_active_entries_per_cell_batch(cell);
       const Material    &material =
           materials.get(data.get_cell_iterator(cell, 0)->material_id());
+      // F = I + grad u in the plane, then the plane-strain slice
+      // (F_33 = 1 in 2D); inverted points and padding lanes get F = I.
+      std::array<Tensor<2, 3, VectorizedDouble>, Utilities::pow(p + 1, dim)> F;
+      VectorizedDouble volume = 0, dilated = 0;
       for (unsigned int q = 0; q < phi.n_q_points; ++q)
       {
-        // F = I + grad u in the plane, then the plane-strain slice
-        // (F_33 = 1 in 2D)
         Tensor<2, dim, VectorizedDouble> F_dim = phi.get_gradient(q);
         for (unsigned int d = 0; d < dim; ++d)
           F_dim[d][d] += 1.0;
-        Tensor<2, 3, VectorizedDouble> F = PlaneStrain::to_3d<dim>(F_dim);
-        const VectorizedDouble         J = determinant(F);
+        F[q]                     = PlaneStrain::to_3d<dim>(F_dim);
+        const VectorizedDouble J = determinant(F[q]);
         for (unsigned int lane = 0; lane < width; ++lane)
         {
           if (lane < lanes)
@@ -135,15 +140,35 @@ namespace softgrasp
           if (lane >= lanes || !(J[lane] > 0)) // padding or inverted: skip
             for (unsigned int i = 0; i < 3; ++i)
               for (unsigned int j = 0; j < 3; ++j)
-                F[i][j][lane] = (i == j) ? 1.0 : 0.0;
+                F[q][i][j][lane] = (i == j) ? 1.0 : 0.0;
         }
+        volume += phi.JxW(q);
+        dilated += determinant(F[q]) * phi.JxW(q);
+      }
+      // Mean dilatation: one dilatation J_e = v_e / V_e and pressure
+      // p = U'(J_e) per element; energy V_e U(J_e) + int Psi_iso dV.
+      VectorizedDouble pressure = 0;
+      if (mean_dilatation)
+        for (unsigned int lane = 0; lane < lanes; ++lane)
+        {
+          const double J_e = dilated[lane] / volume[lane];
+          pressure[lane]   = material.volumetric_energy().first_derivative(J_e);
+          energy += volume[lane] * material.volumetric_energy().energy(J_e);
+        }
+      for (unsigned int q = 0; q < phi.n_q_points; ++q)
+      {
         const StructuralDirections *point_directions =
             directions.empty()
                 ? isotropic.data()
                 : &directions[(cell * phi.n_q_points + q) * width];
         Tensor<2, 3, VectorizedDouble> P;
         VectorizedDouble               psi;
-        material.first_piola_batch(F, point_directions, lanes, P, psi);
+        material.first_piola_batch(F[q],
+                                   point_directions,
+                                   lanes,
+                                   P,
+                                   psi,
+                                   mean_dilatation ? &pressure : nullptr);
         const VectorizedDouble JxW = phi.JxW(q);
         for (unsigned int lane = 0; lane < lanes; ++lane)
           energy += psi[lane] * JxW[lane];

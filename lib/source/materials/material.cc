@@ -87,7 +87,8 @@ namespace softgrasp
                                    const StructuralDirections     *directions,
                                    const unsigned int              n_lanes,
                                    Tensor<2, 3, VectorizedDouble> &P,
-                                   VectorizedDouble               &energy) const
+                                   VectorizedDouble               &energy,
+                                   const VectorizedDouble *pressure) const
   {
     // P = F S with S from decoupled_stress(), written with
     // F C^{-1} = F^{-T} = cof(F) / J: no inverse of C, no product F S.
@@ -105,11 +106,14 @@ namespace softgrasp
     SymmetricTensor<2, 3, VectorizedDouble> X;
     model->evaluate_batch(f * C, directions, n_lanes, W_iso, X);
     VectorizedDouble U = 0, dU = 0; // volumetric: scalar per lane
-    for (unsigned int lane = 0; lane < n_lanes; ++lane)
-    {
-      U[lane]  = volumetric.energy(J[lane]);
-      dU[lane] = volumetric.first_derivative(J[lane]);
-    }
+    if (pressure)
+      dU = *pressure;
+    else
+      for (unsigned int lane = 0; lane < n_lanes; ++lane)
+      {
+        U[lane]  = volumetric.energy(J[lane]);
+        dU[lane] = volumetric.first_derivative(J[lane]);
+      }
     const VectorizedDouble XC = X * C;
     const VectorizedDouble a  = (J * dU - (2.0 / 3.0) * f * XC) / J;
     P = a * cofactor(F) + (2.0 * f) * (F * Tensor<2, 3, VectorizedDouble>(X));

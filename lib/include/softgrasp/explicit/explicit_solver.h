@@ -28,8 +28,10 @@ namespace softgrasp
    * undone, the last good state is written (VTU and checkpoint), and the
    * run stops with a SolverFailure naming the cause and the fix.
    *
-   * Displacement formulation only (a mixed u-p-J setting is noted and
-   * applies to the quasi-static solver). Loads: prescribed displacements
+   * Formulations: displacement, or with 'mixed u-p-J' mean dilatation
+   * (one dilatation and pressure per element; for Q1 the quasi-static
+   * solver's Q1-P0, for Q2 a P0 pressure where the quasi-static solver
+   * uses P1). Loads: prescribed displacements
    * (Dirichlet, as functions of t) and
    * contact with the rigid bodies. Tractions, pressures and gravity are
    * not offered here yet (an InputError says so).

@@ -39,12 +39,18 @@ namespace softgrasp
     /**
      * @p constraints: hanging-node constraints only (Dirichlet values are
      * the integrator's business; their rows keep their internal force, the
-     * reaction).
+     * reaction). With @p mean_dilatation, the volumetric response uses
+     * one dilatation per element, J_e = v_e / V_e (the element's deformed
+     * over its reference volume) and the pressure p = U'(J_e): the u-p-J
+     * form with constant pressure per element, which does not lock for
+     * nearly incompressible tissue (for Q1 it is the quasi-static solver's
+     * Q1-P0 element).
      */
     InternalForceOperator(const dealii::Mapping<dim>              &mapping,
                           const dealii::DoFHandler<dim>           &dofs,
                           const dealii::AffineConstraints<double> &constraints,
-                          const MaterialLibrary                   &materials);
+                          const MaterialLibrary                   &materials,
+                          const bool mean_dilatation = false);
 
     void initialize_dof_vector(VectorType &vector) const;
 
@@ -67,6 +73,7 @@ namespace softgrasp
     dealii::MatrixFree<dim, double> data;
     const MaterialLibrary          &materials;
     unsigned int                    degree;
+    bool                            mean_dilatation;
     /// Structural directions per (cell batch, quadrature point, lane), for
     /// anisotropic materials only (empty otherwise).
     std::vector<StructuralDirections> directions;

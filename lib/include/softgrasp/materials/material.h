@@ -96,13 +96,17 @@ namespace softgrasp
      * formulas as evaluate_material(). Every lane below @p n_lanes must
      * have det F > 0 (check before); the padding lanes from @p n_lanes on
      * must hold a valid F (e.g. the identity) and give P = 0 there.
-     * @p directions holds n_lanes entries.
+     * @p directions holds n_lanes entries. With @p pressure, the
+     * volumetric stress uses that pressure p (Pa; U'(J) replaced by p, as
+     * in evaluate_spatial_with_pressure()) and @p energy holds the
+     * isochoric part only: the mean-dilatation (u-p-J) form.
      */
     void first_piola_batch(const dealii::Tensor<2, 3, VectorizedDouble> &F,
                            const StructuralDirections             *directions,
                            const unsigned int                      n_lanes,
                            dealii::Tensor<2, 3, VectorizedDouble> &P,
-                           VectorizedDouble &energy) const;
+                           VectorizedDouble                       &energy,
+                           const VectorizedDouble *pressure = nullptr) const;
 
     /// Psi(F) (Pa).
     double strain_energy(const dealii::Tensor<2, 3> &F,
