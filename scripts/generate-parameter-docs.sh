@@ -8,8 +8,8 @@ mkdir -p "$root/doc/parameters"
   > "$root/doc/parameters/tissue_curves.prm"
 echo "wrote doc/parameters/tissue_curves.prm"
 "$root/build/examples/cook_membrane/cook_membrane" --print-parameters \
-  > "$root/doc/parameters/quasi_static_solver.prm"
-echo "wrote doc/parameters/quasi_static_solver.prm"
+  > "$root/doc/parameters/solver.prm"
+echo "wrote doc/parameters/solver.prm (every solver program: quasi-static and explicit)"
 "$root/build/examples/hertz_indentation/hertz_indentation" --print-parameters \
   "$root/examples/hertz_indentation/hertz_indentation.prm" \
   > "$root/doc/parameters/contact_hertz_indentation.prm"
