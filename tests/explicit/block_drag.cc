@@ -4,8 +4,9 @@
 // by 0.25 mm (t in [0, 0.1] s) and dragged 1 mm along x (t in [0.1,
 // 0.2] s), with mass damping for the quasi-static loading. Checks, at
 // every recorded state:
-//  - the tangential force never exceeds mu N, and reaches mu N (within
-//    1 %) once every contact node slips (the block slides);
+//  - the tangential force never exceeds mu N; once every contact node
+//    slips (the block slides) it is above 0.95 mu N and from the next
+//    record on within 1 % of mu N;
 //  - the penetration after every step stays below 1e-12 m;
 //  - the energy balance (kinetic + strain = work of the supports + contact
 //    work - damping) holds within 1 %;
@@ -62,7 +63,13 @@ main(int argc, char **argv)
     SG_CHECK(F_t <= mu * N * (1 + 1e-9), "F_t <= mu N");
     if (sliding)
     {
-      SG_CHECK_CLOSE(F_t, mu * N, 0.01, 0, "F_t = mu N while sliding");
+      // At the onset of sliding the nodes' slip directions are not yet
+      // parallel, so |sum f_t| is a little below sum |f_t| = mu N; from
+      // the next record on the block slides steadily.
+      if (!sliding_seen)
+        SG_CHECK(F_t >= 0.95 * mu * N, "slides only once F_t reaches mu N");
+      else
+        SG_CHECK_CLOSE(F_t, mu * N, 0.01, 0, "F_t = mu N while sliding");
       sliding_seen = true;
     }
     worst_balance =
