@@ -334,6 +334,20 @@ namespace softgrasp
 
   template <int dim>
   const typename CentralDifference<dim>::VectorType &
+  CentralDifference<dim>::internal_forces() const
+  {
+    return f;
+  }
+
+  template <int dim>
+  const typename CentralDifference<dim>::VectorType &
+  CentralDifference<dim>::external_forces_now() const
+  {
+    return f_ext;
+  }
+
+  template <int dim>
+  const typename CentralDifference<dim>::VectorType &
   CentralDifference<dim>::contact_forces() const
   {
     return f_contact;

@@ -161,7 +161,7 @@ namespace softgrasp
       hanging.distribute(u);
   }
 
-  template <int dim> void ExplicitSolver<dim>::update_system(const double time)
+  template <int dim> void ExplicitSolver<dim>::update_system()
   {
     const VectorType &u        = integrator->displacement();
     auto             &solution = this->solid->solution();
@@ -169,16 +169,18 @@ namespace softgrasp
       solution[i] = u(i);
     solution.compress(VectorOperation::insert);
     this->solid->update_ghosts();
-    // The reactions f_int - f_ext at the supports, by the quasi-static
-    // assembly of the same state (once per record, not per step).
-    this->boundary_conditions.set_time(time);
-    this->solid->update_constraints();
-    this->solid->assemble(false);
+    // The reactions f_int - f_ext at the supports: the integrator's own
+    // (matrix-free) forces of this state.
+    const VectorType &f_int = integrator->internal_forces();
+    const VectorType &f_ext = integrator->external_forces_now();
+    this->solid->set_forces(
+        [&](const types::global_dof_index i) { return f_int(i); },
+        [&](const types::global_dof_index i) { return f_ext(i); });
   }
 
   template <int dim> void ExplicitSolver<dim>::record_state(const double time)
   {
-    update_system(time);
+    update_system();
     const auto          e        = integrator->energies();
     std::vector<double> trailing = {e.kinetic,
                                     e.internal,
@@ -383,7 +385,12 @@ namespace softgrasp
         const double remaining = t_record - integrator->time();
         const double dt = remaining / std::ceil(remaining / time_step - 1e-9);
         using Result    = typename CentralDifference<dim>::StepResult;
-        switch (integrator->step(dt))
+        Result result;
+        {
+          TimerOutput::Scope scope(this->timers, "time steps");
+          result = integrator->step(dt);
+        }
+        switch (result)
         {
         case Result::ok:
           break;

@@ -100,12 +100,13 @@ namespace softgrasp
     const unsigned int mapping_degree =
         mesh.has_curved_boundary() ? solver_parameters.discretization.degree
                                    : 1;
-    solid             = std::make_unique<SolidSystem<dim>>(triangulation,
+    solid = std::make_unique<SolidSystem<dim>>(triangulation,
                                                material_library,
                                                boundary_conditions,
                                                solver_parameters,
                                                mapping_degree,
                                                timers);
+    solid->set_tangent_needed(needs_tangent());
     stopped           = false;
     last_output_step  = static_cast<unsigned int>(-1);
     const bool resume = solver_parameters.checkpoint.resume;

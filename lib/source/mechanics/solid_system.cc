@@ -48,14 +48,19 @@ namespace softgrasp
       v->reinit(owned, relevant, comm, /*vector_writable=*/true);
 
     update_constraints();
-    TrilinosWrappers::SparsityPattern sparsity(owned, owned, relevant, comm);
-    DoFTools::make_sparsity_pattern(dofs,
-                                    sparsity,
-                                    homogeneous_constraints,
-                                    false,
-                                    Utilities::MPI::this_mpi_process(comm));
-    sparsity.compress();
-    tangent.reinit(sparsity);
+    if (with_tangent)
+    {
+      TrilinosWrappers::SparsityPattern sparsity(owned, owned, relevant, comm);
+      DoFTools::make_sparsity_pattern(dofs,
+                                      sparsity,
+                                      homogeneous_constraints,
+                                      false,
+                                      Utilities::MPI::this_mpi_process(comm));
+      sparsity.compress();
+      tangent.reinit(sparsity);
+    }
+    else
+      tangent.clear();
 
     reaction_dofs.clear();
     std::vector<IndexSet> component_dofs(dim);
@@ -74,7 +79,8 @@ namespace softgrasp
         per_component.push_back(boundary & component_dofs[c]);
       reaction_dofs.push_back(per_component);
     }
-    if (parameters.linear_solver.type == LinearSolverType::iterative)
+    if (with_tangent &&
+        parameters.linear_solver.type == LinearSolverType::iterative)
       compute_rigid_body_modes();
 
     Point<dim> lower, upper;
@@ -146,6 +152,12 @@ namespace softgrasp
     linear_solver.set_rigid_body_modes(modes);
   }
 
+  template <int dim>
+  void SolidSystem<dim>::set_tangent_needed(const bool needed)
+  {
+    with_tangent = needed;
+  }
+
   template <int dim> double SolidSystem<dim>::update_constraints()
   {
     update_ghosts();
@@ -188,6 +200,9 @@ namespace softgrasp
   SolidSystem<dim>::assemble(const bool with_matrix)
   {
     TimerOutput::Scope scope(timer, with_matrix ? "assembly" : "residual");
+    AssertThrow(!with_matrix || with_tangent,
+                ExcMessage("This SolidSystem was set up without a tangent "
+                           "matrix (set_tangent_needed(false))."));
     update_ghosts();
     if (with_matrix)
     {
@@ -302,6 +317,23 @@ namespace softgrasp
   SolidSystem<dim>::residual_dot(const TrilinosWrappers::MPI::Vector &du) const
   {
     return residual * du;
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::set_forces(
+      const std::function<double(types::global_dof_index)> &internal,
+      const std::function<double(types::global_dof_index)> &external)
+  {
+    TrilinosWrappers::MPI::Vector a(owned, communicator()), b(a);
+    for (const auto i : owned)
+    {
+      a[i] = internal(i);
+      b[i] = external(i);
+    }
+    a.compress(VectorOperation::insert);
+    b.compress(VectorOperation::insert);
+    f_int = a;
+    f_ext = b;
   }
 
   template <int dim>

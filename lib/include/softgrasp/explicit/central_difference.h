@@ -120,6 +120,9 @@ namespace softgrasp
     const VectorType &velocity() const;
     /// Velocity at the last half step v^{n-1/2} (m/s).
     const VectorType &velocity_half_step() const;
+    /// Internal and external forces at the current step (N).
+    const VectorType &internal_forces() const;
+    const VectorType &external_forces_now() const;
     /// Contact forces on the tissue of the last step (N; at t^{n-1}).
     const VectorType &contact_forces() const;
     Energies          energies() const;

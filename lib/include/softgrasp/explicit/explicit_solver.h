@@ -53,6 +53,10 @@ namespace softgrasp
   private:
     std::unique_ptr<ContactSurface<dim>>
          make_contact(const double shear_modulus) override;
+    bool needs_tangent() const override
+    {
+      return false;
+    }
     void check_loads() const;
     /// Operator, lumped (and scaled) mass, fixed dofs, integrator.
     void setup_integrator();
@@ -60,8 +64,8 @@ namespace softgrasp
     /// Dirichlet dofs with their support points and functions.
     void setup_prescribed();
     void prescribe(const double time, VectorType &u);
-    /// Copy the integrator's displacement into the SolidSystem at @p time.
-    void              update_system(const double time);
+    /// Copy the integrator's displacement and forces into the SolidSystem.
+    void              update_system();
     void              record_state(const double time);
     void              save_checkpoint();
     void              write_last_good_state(const double time);

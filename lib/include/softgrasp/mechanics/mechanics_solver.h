@@ -96,6 +96,9 @@ namespace softgrasp
     /// @p leading, the reactions and monitor points, then @p trailing.
     void prepare_run(const std::vector<std::string> &leading,
                      const std::vector<std::string> &trailing);
+    /// Whether the SolidSystem needs its tangent matrix (Newton) or only
+    /// residuals.
+    virtual bool needs_tangent() const = 0;
     /// The contact enforcement of the derived solver.
     virtual std::unique_ptr<ContactSurface<dim>>
     make_contact(const double shear_modulus) = 0;

@@ -29,6 +29,10 @@ namespace softgrasp
   private:
     std::unique_ptr<ContactSurface<dim>>
          make_contact(const double shear_modulus) override;
+    bool needs_tangent() const override
+    {
+      return true;
+    }
     bool solve_step(const double time, std::string &failure_report);
     void record_step(const double       time,
                      const unsigned int newton_iterations,

@@ -10,6 +10,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <functional>
 #include <map>
 #include <softgrasp/mechanics/boundary_conditions.h>
 #include <softgrasp/mechanics/cell_assembler.h>
@@ -51,6 +52,10 @@ namespace softgrasp
     /// Distribute dofs and size matrix and vectors (the solution is zeroed).
     void setup();
 
+    /// Whether setup() allocates the tangent matrix (default: yes). An
+    /// explicit solver needs residuals only and saves its memory.
+    void set_tangent_needed(const bool needed);
+
     /**
      * Rebuild the constraints for the boundary values at the current time
      * of the boundary conditions. Returns the largest |g - u| (m) at
@@ -66,6 +71,15 @@ namespace softgrasp
 
     /// du . (f_ext - f_int) on free dofs, from the last assembly (N m).
     double residual_dot(const dealii::TrilinosWrappers::MPI::Vector &du) const;
+
+    /**
+     * Take f_int and f_ext (N) from elsewhere (owned entries, e.g. the
+     * explicit solver's matrix-free forces) instead of an assemble(), for
+     * reactions() and internal_forces(). Collective.
+     */
+    void set_forces(
+        const std::function<double(dealii::types::global_dof_index)> &f_int,
+        const std::function<double(dealii::types::global_dof_index)> &f_ext);
 
     /// Reaction force f_int - f_ext (N) summed over each Dirichlet boundary.
     std::map<dealii::types::boundary_id, dealii::Tensor<1, dim>>
@@ -132,6 +146,7 @@ namespace softgrasp
     std::vector<std::vector<dealii::IndexSet>> reaction_dofs; ///< [id][c]
     double                                     domain_size      = 1; ///< m
     NodalConditions<dim>                      *nodal_conditions = nullptr;
+    bool                                       with_tangent     = true;
   };
 } // namespace softgrasp
 
