@@ -16,6 +16,8 @@
 //      ./explicit_step <degree> <Q1 elements per edge: 18, 40 or 68>: one
 //      case, with its own peak memory (benchmarks/explicit_step.sh runs
 //      every case this way, on 1 and 2 ranks).
+#include "peak_memory.h"
+
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
@@ -28,16 +30,6 @@ using namespace dealii;
 
 namespace
 {
-  double peak_memory_mb()
-  {
-    std::ifstream status("/proc/self/status");
-    std::string   line;
-    while (std::getline(status, line))
-      if (line.rfind("VmHWM:", 0) == 0)
-        return std::stod(line.substr(6)) / 1024.0;
-    return 0;
-  }
-
   /// A 20 mm cube block, a sphere (R = 10 mm) pressed 0.2 mm into its top
   /// over the run; about @p steps steps of the stable size.
   std::string

@@ -10,6 +10,8 @@
 //
 // Run: ./internal_force_throughput [max DoFs, default 1.2e6]
 //      mpirun -np 2 ./internal_force_throughput
+#include "peak_memory.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
@@ -44,16 +46,6 @@ namespace
              0.02 * p[2] * p[c];
     }
   };
-
-  double peak_memory_mb()
-  {
-    std::ifstream status("/proc/self/status");
-    std::string   line;
-    while (std::getline(status, line))
-      if (line.rfind("VmHWM:", 0) == 0)
-        return std::stod(line.substr(6)) / 1024.0;
-    return 0;
-  }
 
   MaterialLibrary neo_hookean()
   {

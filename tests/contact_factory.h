@@ -61,6 +61,25 @@ namespace softgrasp_tests
       << "\n set Friction coefficient = " << mu << "\nend\n";
     return s.str();
   }
+  /**
+   * The Coulomb block: a 10 x 10 x 5 mm neo-Hookean block (mu = 10 kPa,
+   * nu = 0.3) on a rigid floor (plane geom, friction @p mu), its top face
+   * (id 5) moved by @p top_displacement (a muParser vector expression of
+   * t, m); the bottom (id 4) is the contact surface.
+   */
+  inline std::string block_on_floor(const double       mu,
+                                    const std::string &top_displacement)
+  {
+    std::ostringstream s;
+    s << block("0, 0, 0", "0.01, 0.01, 0.005", "4, 4, 2")
+      << neo_hookean(10e3, 0.3) << "subsection Boundary conditions\n"
+      << " set Dirichlet boundary ids = 5\n"
+      << " subsection Dirichlet boundary 5\n  set Components = x, y, z\n"
+      << "  set Displacement = " << top_displacement << "\n end\nend\n"
+      << contact("4", mu)
+      << rigid_body("floor", "plane", "plane", "1", "0: 0, 0, 0, 1, 0, 0, 0");
+    return s.str();
+  }
 } // namespace softgrasp_tests
 
 #endif

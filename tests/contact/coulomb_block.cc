@@ -27,14 +27,7 @@ main(int argc, char **argv)
   initlog(5);
   const double       mu = 0.3;
   std::ostringstream prm;
-  prm << block("0, 0, 0", "0.01, 0.01, 0.005", "4, 4, 2")
-      << neo_hookean(10e3, 0.3) << "subsection Boundary conditions\n"
-      << " set Dirichlet boundary ids = 5\n"
-      << " subsection Dirichlet boundary 5\n  set Components = x, y, z\n"
-      << "  set Displacement = 0.001 * max(t - 1, 0); 0; "
-         "-0.00025 * min(t, 1)\n end\nend\n"
-      << contact("4", mu)
-      << rigid_body("floor", "plane", "plane", "1", "0: 0, 0, 0, 1, 0, 0, 0")
+  prm << block_on_floor(mu, "0.001 * max(t - 1, 0); 0; -0.00025 * min(t, 1)")
       << "subsection Time\n set End time = 2\n set Time step = 0.1\nend\n"
       << "subsection Newton\n set Relative tolerance = 1e-11\nend\n"
       << "subsection Linear solver\n set Type = direct\nend\n"

@@ -25,14 +25,7 @@ main(int argc, char **argv)
   initlog(4);
   const double       mu = 0.3;
   std::ostringstream prm;
-  prm << block("0, 0, 0", "0.01, 0.01, 0.005", "4, 4, 2")
-      << neo_hookean(10e3, 0.3) << "subsection Boundary conditions\n"
-      << " set Dirichlet boundary ids = 5\n"
-      << " subsection Dirichlet boundary 5\n  set Components = x, y, z\n"
-      << "  set Displacement = 0.01 * max(t - 0.1, 0); 0; "
-         "-0.0025 * min(t, 0.1)\n end\nend\n"
-      << contact("4", mu)
-      << rigid_body("floor", "plane", "plane", "1", "0: 0, 0, 0, 1, 0, 0, 0")
+  prm << block_on_floor(mu, "0.01 * max(t - 0.1, 0); 0; -0.0025 * min(t, 0.1)")
       << "subsection Time\n set Integrator = explicit dynamic\n"
       << " set End time = 0.2\n set Time step = 0.01\nend\n"
       << "subsection Explicit dynamics\n set Mass damping = 500\nend\n"

@@ -18,6 +18,19 @@ namespace softgrasp_tests
         prm, PARAMETER_FILES "/sphere_squeeze.prm");
   }
 
+  /// The shipped sphere_squeeze.prm one refinement coarser (1470
+  /// displacement dofs), without pictures.
+  inline void read_coarse_sphere_squeeze(dealii::ParameterHandler &prm)
+  {
+    read_sphere_squeeze(prm);
+    prm.enter_subsection("Indentation study");
+    prm.set("Pictures", false);
+    prm.leave_subsection();
+    prm.enter_subsection("Mesh");
+    prm.set("Global refinements", "2");
+    prm.leave_subsection();
+  }
+
   inline softgrasp::GraspParameters
   sphere_grasp_parameters(dealii::ParameterHandler &prm)
   {

@@ -23,13 +23,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   softgrasp_tests::initlog();
   dealii::ParameterHandler prm;
-  softgrasp_tests::read_sphere_squeeze(prm);
-  prm.enter_subsection("Indentation study");
-  prm.set("Pictures", false);
-  prm.leave_subsection();
-  prm.enter_subsection("Mesh"); // coarse: 1470 displacement dofs
-  prm.set("Global refinements", "2");
-  prm.leave_subsection();
+  softgrasp_tests::read_coarse_sphere_squeeze(prm);
   prm.enter_subsection("Explicit dynamics");
   prm.set("Mass scaling time step", "1e-4");
   prm.set("Mass damping", "100");
