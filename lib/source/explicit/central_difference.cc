@@ -24,6 +24,7 @@ namespace softgrasp
                          &f_ext,
                          &f_contact,
                          &u_trial,
+                         &v_now,
                          &eigenvector,
                          &u_prev,
                          &v_half_prev,
@@ -259,9 +260,6 @@ namespace softgrasp
       e = e_old;
       return result;
     }
-    // v^{n+1} estimate, for velocity()
-    v = v_half;
-    v.add(0.5 * dt, a);
     started = true;
     last_dt = dt;
     ++steps_taken;
@@ -300,8 +298,6 @@ namespace softgrasp
     u       = u0;
     v_half  = v_half0;
     acceleration(t, u, v_half);
-    v = v_half;
-    v.add(0.5 * last_dt, a);
     e.kinetic       = s[3];
     e.internal      = s[4];
     e.external_work = s[5];
@@ -369,7 +365,12 @@ namespace softgrasp
   const typename CentralDifference<dim>::VectorType &
   CentralDifference<dim>::velocity() const
   {
-    return v;
+    // Computed on demand (not on every step): v^n = v^{n-1/2} + dt/2 a^n.
+    if (!started)
+      return v;
+    v_now = v_half;
+    v_now.add(0.5 * last_dt, a);
+    return v_now;
   }
 
   template <int dim>

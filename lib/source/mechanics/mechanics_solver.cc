@@ -33,10 +33,9 @@ namespace softgrasp
   std::unique_ptr<MechanicsSolver<dim>>
   MechanicsSolver<dim>::create(MPI_Comm comm, ParameterHandler &prm)
   {
-    prm.enter_subsection("Time");
-    const bool is_explicit = prm.get("Integrator") == "explicit dynamic";
-    prm.leave_subsection();
-    if (is_explicit)
+    TimeParameters time; // the one place that maps the entry to the enum
+    time.parse_parameters(prm);
+    if (time.integrator == TimeIntegrator::explicit_dynamic)
       return std::make_unique<ExplicitSolver<dim>>(comm, prm);
     return std::make_unique<QuasiStaticSolver<dim>>(comm, prm);
   }

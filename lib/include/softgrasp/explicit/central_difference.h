@@ -148,6 +148,7 @@ namespace softgrasp
     unsigned long                     steps_taken   = 0;
     double                            t = 0, last_dt = 0;
     VectorType u, v_half, v, a, f, f_ext, f_contact, u_trial, eigenvector;
+    mutable VectorType v_now; ///< velocity() at the current step
     /// The state before the current step (kept for the rollback and the
     /// work over the step; swapped, not reallocated, each step).
     VectorType u_prev, v_half_prev, a_prev, f_prev, f_ext_prev;
