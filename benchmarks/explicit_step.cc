@@ -13,9 +13,11 @@
 //
 // Run: ./explicit_step [max DoFs, default 1.2e6]: every case in one process
 //      (the peak memory column is then the running maximum), or
-//      ./explicit_step <degree> <Q1 elements per edge: 18, 40 or 68>: one
-//      case, with its own peak memory (benchmarks/explicit_step.sh runs
-//      every case this way, on 1 and 2 ranks).
+//      ./explicit_step <degree> <Q1 elements per edge: 18, 40 or 68>
+//      [vectorized|reference]: one case with the given force kernel
+//      (default vectorized), with its own peak memory
+//      (benchmarks/explicit_step.sh runs every case this way, with both
+//      kernels, on 1 and 2 ranks).
 #include "peak_memory.h"
 
 #include <deal.II/base/mpi.h>
@@ -32,8 +34,10 @@ namespace
 {
   /// A 20 mm cube block, a sphere (R = 10 mm) pressed 0.2 mm into its top
   /// over the run; about @p steps steps of the stable size.
-  std::string
-  prm(const unsigned int n, const unsigned int degree, const unsigned int steps)
+  std::string prm(const unsigned int n,
+                  const unsigned int degree,
+                  const unsigned int steps,
+                  const std::string &kernel)
   {
     const double L = 0.02, mu = 10e3, nu = 0.45, rho = 1000;
     const double c = std::sqrt(2 * mu * (1 - nu) / (1 - 2 * nu) / rho);
@@ -67,7 +71,8 @@ namespace
       << "subsection Time\n set Integrator = explicit dynamic\n"
       << " set End time = " << T << "\n set Time step = " << T / 4 << "\nend\n"
       << "subsection Explicit dynamics\n set Mass damping = 100\n"
-      << " set Stable step interval = 1000\nend\n"
+      << " set Stable step interval = 1000\n set Force kernel = " << kernel
+      << "\nend\n"
       << "subsection Output\n set Directory = explicit-step-output\n"
       << " set VTU interval = 0\n set Verbose = false\nend\n";
     return s.str();
@@ -83,13 +88,16 @@ main(int argc, char **argv)
   const bool   single   = argc > 2;
   const double max_dofs = argc == 2 ? std::stod(argv[1]) : 1.2e6;
   if (root && !single)
-    std::cout << "element,dofs,cells,steps,ms_per_step,dof_steps_per_s,"
+    std::cout << "kernel,element,dofs,cells,steps,ms_per_step,dof_steps_per_s,"
                  "us_per_cell_step,contact_share,peak_kB_per_dof\n";
   std::vector<unsigned int> degrees = {1, 2}, sizes = {18, 40, 68};
+  std::string               kernel = "vectorized";
   if (single)
   {
     degrees = {static_cast<unsigned int>(std::stoi(argv[1]))};
     sizes   = {static_cast<unsigned int>(std::stoi(argv[2]))};
+    if (argc > 3)
+      kernel = argv[3];
   }
   for (const unsigned int degree : degrees)
     for (const unsigned int n_q1 : sizes)
@@ -103,7 +111,7 @@ main(int argc, char **argv)
       softgrasp::MechanicsSolver<3>::declare_parameters(handler);
       softgrasp::ParameterReader reader;
       softgrasp::MechanicsSolver<3>::add_passes(reader);
-      reader.read_string(handler, prm(n, degree, steps), "benchmark");
+      reader.read_string(handler, prm(n, degree, steps, kernel), "benchmark");
       auto solver = softgrasp::MechanicsSolver<3>::create(comm, handler);
       std::streambuf *silenced = std::cout.rdbuf(nullptr);
       solver->run();
@@ -118,7 +126,8 @@ main(int argc, char **argv)
       const double memory = Utilities::MPI::sum(peak_memory_mb(), comm) * 1024 /
                             solver->system().n_dofs();
       if (root)
-        std::cout << "Q" << degree << "," << solver->system().n_dofs() << ","
+        std::cout << kernel << ",Q" << degree << ","
+                  << solver->system().n_dofs() << ","
                   << solver->system()
                          .dof_handler()
                          .get_triangulation()

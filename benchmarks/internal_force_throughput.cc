@@ -1,12 +1,14 @@
 // Benchmark: the explicit solver's kernel, internal forces f_int(u) of a
-// hyperelastic (neo-Hookean) block, matrix-free (InternalForceOperator:
-// FEEvaluation with sum factorisation) against a cell-by-cell FEValues
-// assembly of the same residual (what a matrix-based code does per step),
-// for Q1 and Q2 at about 20k, 200k and 1M displacement DoFs.
+// hyperelastic (neo-Hookean) block, matrix-free (InternalForceOperator)
+// with the vectorised kernel (explicit SIMD over cells) and the reference
+// kernel (FEEvaluation with sum factorisation, deal.II's vectorisation
+// width), against a cell-by-cell FEValues assembly of the same residual
+// (what a matrix-based code does per step), for Q1 and Q2 at about 20k,
+// 200k and 1M displacement DoFs, all in the same run.
 //
-// Reports per case: DoFs, cells, time per evaluation, DoF-evaluations per
-// second (in total over all ranks) and time per element, and the peak
-// resident memory. Results in doc/benchmarks.md.
+// Reports per case: DoFs, cells, time per evaluation and DoF-evaluations
+// per second (in total over all ranks) of each kernel, time per element,
+// and the peak resident memory. Results in doc/benchmarks.md.
 //
 // Run: ./internal_force_throughput [max DoFs, default 1.2e6]
 //      mpirun -np 2 ./internal_force_throughput
@@ -78,23 +80,33 @@ namespace
     const MappingQ<3>         mapping(1);
     AffineConstraints<double> none;
     none.close();
-    InternalForceOperator<3> op(mapping, dofs, none, materials);
+    using Kernel = InternalForceOperator<3>::Kernel;
+    const InternalForceOperator<3> op(
+        mapping, dofs, none, materials, false, Kernel::vectorized);
+    const InternalForceOperator<3> op_reference(
+        mapping, dofs, none, materials, false, Kernel::reference);
     LinearAlgebra::distributed::Vector<double> u, f;
     op.initialize_dof_vector(u);
     op.initialize_dof_vector(f);
     VectorTools::interpolate(mapping, dofs, Displacement(), u);
 
-    // Matrix-free: repeat for at least 1 s.
-    op.apply(u, f);
-    Timer        timer(comm, true);
-    unsigned int repeats = 0;
-    do
+    // Matrix-free, each kernel: repeat for at least 1 s.
+    Timer      timer(comm, true);
+    const auto seconds_per_apply = [&](const InternalForceOperator<3> &o)
     {
-      op.apply(u, f);
-      ++repeats;
-    } while (timer.wall_time() < 1.0 || repeats < 3);
-    timer.stop();
-    const double mf = timer.last_wall_time() / repeats;
+      o.apply(u, f);
+      timer.restart();
+      unsigned int repeats = 0;
+      do
+      {
+        o.apply(u, f);
+        ++repeats;
+      } while (timer.wall_time() < 1.0 || repeats < 3);
+      timer.stop();
+      return timer.last_wall_time() / repeats;
+    };
+    const double mf0 = seconds_per_apply(op_reference);
+    const double mf  = seconds_per_apply(op);
 
     // FEValues assembly of the same vector (once or twice).
     u.update_ghost_values();
@@ -146,12 +158,15 @@ namespace
     if (root)
       std::cout << "Q" << degree << std::setw(9) << dofs.n_dofs() << " DoFs "
                 << std::setw(8) << tria.n_global_active_cells() << " cells | "
-                << "matrix-free " << std::setw(9) << std::setprecision(4)
+                << "vectorised " << std::setw(9) << std::setprecision(4)
                 << mf * 1e3 << " ms, " << std::setw(7) << n_dofs / mf / 1e6
                 << " M DoF/s, " << std::setw(6) << mf / n_cells * 1e9
-                << " ns/cell | FEValues " << std::setw(9) << fev * 1e3
+                << " ns/cell | reference " << std::setw(9) << mf0 * 1e3
+                << " ms, " << std::setw(7) << n_dofs / mf0 / 1e6
+                << " M DoF/s | FEValues " << std::setw(9) << fev * 1e3
                 << " ms, " << std::setw(7) << n_dofs / fev / 1e6
-                << " M DoF/s | speed-up " << std::setw(5) << fev / mf
+                << " M DoF/s | speed-up over reference " << std::setw(5)
+                << mf0 / mf << ", over FEValues " << std::setw(5) << fev / mf
                 << " | peak memory " << std::setw(6) << memory << " MB"
                 << std::endl;
   }
@@ -166,7 +181,8 @@ main(int argc, char **argv)
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::cout << "Internal forces of a neo-Hookean block, "
               << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
-              << " rank(s), SIMD width " << VectorizedDouble::size()
+              << " rank(s), SIMD width: deal.II " << VectorizedDouble::size()
+              << ", vectorised kernel " << VectorizedForceKernel<3>::n_lanes()
               << std::endl;
   // subdivisions for about 20k, 200k, 1M DoFs: Q1 3 (n+1)^3, Q2 3 (2n+1)^3
   for (const auto &[degree, n] :

@@ -128,9 +128,16 @@ main(int argc, char **argv)
     dealii::deallog << "t = " << a.value(row, "time")
                     << " s: F = " << a.value(row, "finger/link:F_x") << ", "
                     << a.value(row, "finger/link:F_y") << ", "
-                    << a.value(row, "finger/link:F_z") << " N, slipping "
-                    << a.value(row, "finger/link:slip_nodes") << " of "
-                    << a.value(row, "finger/link:active_nodes") << std::endl;
+                    << a.value(row, "finger/link:F_z") << " N, ";
+    // At t = 0.5 s the capsule just touches the block (gap 0, force at
+    // round-off): which nodes count as closed is decided by round-off, so
+    // the counts are printed for a real contact only.
+    if (scale > 1e-12)
+      dealii::deallog << "slipping " << a.value(row, "finger/link:slip_nodes")
+                      << " of " << a.value(row, "finger/link:active_nodes")
+                      << std::endl;
+    else
+      dealii::deallog << "touching (force at round-off)" << std::endl;
   }
   SG_CHECK(a.value(a.rows.size() - 1, "finger/link:F_z") > 0 &&
                a.value(a.rows.size() - 1, "finger/link:F_x") < 0,

@@ -50,8 +50,16 @@ namespace softgrasp
     hanging.close();
     const bool mixed = this->solver_parameters.discretization.formulation ==
                        Formulation::mixed_upJ;
-    force = std::make_unique<InternalForceOperator<dim>>(
-        this->solid->mapping(), dofs, hanging, this->material_library, mixed);
+    using Kernel = typename InternalForceOperator<dim>::Kernel;
+    force        = std::make_unique<InternalForceOperator<dim>>(
+        this->solid->mapping(),
+        dofs,
+        hanging,
+        this->material_library,
+        mixed,
+        this->solver_parameters.explicit_dynamics.vectorized_force_kernel
+                   ? Kernel::vectorized
+                   : Kernel::reference);
     force->initialize_dof_vector(mass);
     compute_lumped_mass(
         this->solid->mapping(), dofs, hanging, this->material_library, mass);

@@ -60,7 +60,8 @@ namespace softgrasp
       const DoFHandler<dim>           &dofs,
       const AffineConstraints<double> &constraints,
       const MaterialLibrary           &materials,
-      const bool                       mean_dilatation)
+      const bool                       mean_dilatation,
+      const Kernel                     kernel)
       : materials(materials)
       , degree(dofs.get_fe().degree)
       , mean_dilatation(mean_dilatation)
@@ -87,7 +88,10 @@ namespace softgrasp
             cell->material_id();
     additional.cell_vectorization_categories_strict = true;
     data.reinit(mapping, dofs, constraints, QGauss<1>(degree + 1), additional);
-    if (anisotropic)
+    if (kernel == Kernel::vectorized)
+      vectorized = std::make_unique<VectorizedForceKernel<dim>>(
+          data, mapping, constraints, materials, mean_dilatation);
+    if (anisotropic && (!vectorized || !vectorized->other_cells().empty()))
       directions = degree == 1 ? directions_at_points<dim, 1>(data, materials)
                                : directions_at_points<dim, 2>(data, materials);
   }
@@ -188,15 +192,47 @@ namespace softgrasp
   {
     energy = 0;
     min_J  = std::numeric_limits<double>::max();
-    if (degree == 1)
-      data.cell_loop(&InternalForceOperator::local_apply<1>, this, f, u, true);
+    if (!vectorized)
+    {
+      if (degree == 1)
+        data.cell_loop(
+            &InternalForceOperator::local_apply<1>, this, f, u, true);
+      else
+        data.cell_loop(
+            &InternalForceOperator::local_apply<2>, this, f, u, true);
+    }
     else
-      data.cell_loop(&InternalForceOperator::local_apply<2>, this, f, u, true);
+    {
+      // What MatrixFree::cell_loop does around the cells: zero f (ghosts
+      // too), ghost values of u, and the sum of f's ghost entries.
+      f                 = 0;
+      const bool ghosts = u.has_ghost_elements();
+      if (!ghosts)
+        u.update_ghost_values();
+      vectorized->apply(u, f, energy, min_J);
+      apply_reference(u, f, vectorized->other_cells());
+      f.compress(VectorOperation::add);
+      if (!ghosts)
+        u.zero_out_ghost_values();
+    }
     const MPI_Comm comm = f.get_mpi_communicator();
     Result         result;
     result.energy = Utilities::MPI::sum(energy, comm);
     result.min_J  = Utilities::MPI::min(min_J, comm);
     return result;
+  }
+
+  template <int dim>
+  void InternalForceOperator<dim>::apply_reference(
+      const VectorType                &u,
+      VectorType                      &f,
+      const std::vector<unsigned int> &cells) const
+  {
+    for (const unsigned int cell : cells)
+      if (degree == 1)
+        local_apply<1>(data, f, u, {cell, cell + 1});
+      else
+        local_apply<2>(data, f, u, {cell, cell + 1});
   }
 
   template class InternalForceOperator<2>;

@@ -2,6 +2,7 @@
 #include <deal.II/lac/vector.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/base/simd.h>
 #include <softgrasp/materials/holzapfel_gasser_ogden.h>
 #include <sstream>
 
@@ -68,11 +69,7 @@ namespace softgrasp
                                       const bool                   with_second,
                                       Response &response) const
   {
-    AssertThrow(directions.n_directions == n_fibres,
-                ExcMessage("HGO material evaluated with " +
-                           std::to_string(directions.n_directions) +
-                           " structural directions, but it has " +
-                           std::to_string(n_fibres) + " fibre families."));
+    check_directions(directions.n_directions);
     const SymmetricTensor<2, 3> I  = unit_symmetric_tensor<3>();
     const double                I1 = trace(Cbar);
 
@@ -90,12 +87,77 @@ namespace softgrasp
       if (E <= 0)
         continue; // a compressed fibre family carries no load
       const SymmetricTensor<2, 3> D = kappa * I + (1.0 - 3.0 * kappa) * A;
-      const double                e = std::exp(k2 * E * E);
-      response.energy += 0.5 * k1 / k2 * (e - 1.0);
-      response.first_derivative += k1 * E * e * D;
-      if (with_second)
-        response.second_derivative +=
-            k1 * e * (1.0 + 2.0 * k2 * E * E) * outer_product(D, D);
+      double                      energy, slope;
+      fibre_response(E, energy, slope);
+      response.energy += energy;
+      response.first_derivative += slope * D;
+      if (with_second) // d(slope)/dE = k1 e (1 + 2 k2 E^2)
+        response.second_derivative += k1 * std::exp(k2 * E * E) *
+                                      (1.0 + 2.0 * k2 * E * E) *
+                                      outer_product(D, D);
+    }
+  }
+
+  template <typename Number>
+  void HolzapfelGasserOgden::fibre_response(const Number &E,
+                                            Number       &energy,
+                                            Number       &slope) const
+  {
+    using std::exp; // and simd::stdx::exp by argument-dependent lookup
+    const Number e = exp(k2 * E * E);
+    energy         = (0.5 * k1 / k2) * (e - 1.0);
+    slope          = k1 * E * e;
+  }
+
+  void HolzapfelGasserOgden::check_directions(const unsigned int n) const
+  {
+    AssertThrow(n == n_fibres,
+                ExcMessage("HGO material evaluated with " + std::to_string(n) +
+                           " structural directions, but it has " +
+                           std::to_string(n_fibres) + " fibre families."));
+  }
+
+  void HolzapfelGasserOgden::evaluate_block(IsochoricPointBlock &block) const
+  {
+    check_directions(block.n_directions);
+    using V           = simd::Double;
+    const auto  &C    = block.Cbar;
+    const auto  &dirs = block.directions;
+    const double beta = 1.0 - 3.0 * kappa;
+    for (unsigned int k = 0; k < block.n_points; k += simd::width)
+    {
+      std::array<V, 6> c, X;
+      for (unsigned int i = 0; i < 6; ++i)
+        c[i] = simd::load(&C[i][k]);
+      const V I1 = c[0] + c[1] + c[2];
+      V       W  = (0.5 * mu) * (I1 - 3.0);
+      for (unsigned int i = 0; i < 6; ++i)
+        X[i] = i < 3 ? V(0.5 * mu) : V(0.0);
+      for (unsigned int a = 0; a < n_fibres; ++a)
+      {
+        const V n0 = simd::load(&dirs[3 * a][k]);
+        const V n1 = simd::load(&dirs[3 * a + 1][k]);
+        const V n2 = simd::load(&dirs[3 * a + 2][k]);
+        const V I4 = c[0] * n0 * n0 + c[1] * n1 * n1 + c[2] * n2 * n2 +
+                     2.0 * (c[3] * n0 * n1 + c[4] * n0 * n2 + c[5] * n1 * n2);
+        // Macaulay bracket: a compressed family carries no load
+        const V E =
+            simd::stdx::max(kappa * (I1 - 3.0) + beta * (I4 - 1.0), V(0.0));
+        V energy, slope;
+        fibre_response(E, energy, slope);
+        W += energy;
+        // X += slope (kappa I + beta n (x) n)
+        const V s = slope * beta;
+        X[0] += slope * kappa + s * n0 * n0;
+        X[1] += slope * kappa + s * n1 * n1;
+        X[2] += slope * kappa + s * n2 * n2;
+        X[3] += s * n0 * n1;
+        X[4] += s * n0 * n2;
+        X[5] += s * n1 * n2;
+      }
+      simd::store(W, &block.energy[k]);
+      for (unsigned int i = 0; i < 6; ++i)
+        simd::store(X[i], &block.X[i][k]);
     }
   }
 

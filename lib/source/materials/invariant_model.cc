@@ -39,4 +39,38 @@ namespace softgrasp
     energy                    = d.W;
     first_derivative          = d.W1 * I + d.W2 * (I1 * I - Cbar);
   }
+
+  void InvariantModel::evaluate_block(IsochoricPointBlock &block) const
+  {
+    using V = simd::Double;
+    InvariantBlock invariants;
+    invariants.n_points = block.n_points;
+    const auto &C       = block.Cbar;
+    for (unsigned int k = 0; k < block.n_points; k += simd::width)
+    {
+      const V c0 = simd::load(&C[0][k]), c1 = simd::load(&C[1][k]),
+              c2 = simd::load(&C[2][k]), c3 = simd::load(&C[3][k]),
+              c4 = simd::load(&C[4][k]), c5 = simd::load(&C[5][k]);
+      const V I1 = c0 + c1 + c2;
+      // Cbar : Cbar with the off-diagonal entries counted twice
+      const V CC =
+          c0 * c0 + c1 * c1 + c2 * c2 + 2.0 * (c3 * c3 + c4 * c4 + c5 * c5);
+      simd::store(I1, &invariants.I1[k]);
+      simd::store(0.5 * (I1 * I1 - CC), &invariants.I2[k]);
+    }
+    invariant_derivatives(invariants);
+    // dW/dCbar = W1 I + W2 (I1 I - Cbar)
+    for (unsigned int k = 0; k < block.n_points; k += simd::width)
+    {
+      const V W1       = simd::load(&invariants.W1[k]);
+      const V W2       = simd::load(&invariants.W2[k]);
+      const V diagonal = W1 + W2 * simd::load(&invariants.I1[k]);
+      for (unsigned int c = 0; c < 6; ++c)
+      {
+        const V value = (c < 3 ? diagonal : V(0.0)) - W2 * simd::load(&C[c][k]);
+        simd::store(value, &block.X[c][k]);
+      }
+      simd::store(simd::load(&invariants.W[k]), &block.energy[k]);
+    }
+  }
 } // namespace softgrasp

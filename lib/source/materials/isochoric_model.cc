@@ -36,4 +36,24 @@ namespace softgrasp
           first_derivative[i][j][lane] = response.first_derivative[i][j];
     }
   }
+
+  void IsochoricModel::evaluate_block(IsochoricPointBlock &block) const
+  {
+    StructuralDirections point;
+    point.n_directions = block.n_directions;
+    Response response;
+    for (unsigned int k = 0; k < block.n_points; ++k)
+    {
+      dealii::SymmetricTensor<2, 3> C;
+      for (unsigned int c = 0; c < 6; ++c)
+        C.access_raw_entry(c) = block.Cbar[c][k];
+      for (unsigned int a = 0; a < block.n_directions; ++a)
+        for (unsigned int d = 0; d < 3; ++d)
+          point.direction[a][d] = block.directions[3 * a + d][k];
+      evaluate(C, point, false, response);
+      block.energy[k] = response.energy;
+      for (unsigned int c = 0; c < 6; ++c)
+        block.X[c][k] = response.first_derivative.access_raw_entry(c);
+    }
+  }
 } // namespace softgrasp

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <deal.II/physics/transformations.h>
+#include <softgrasp/base/simd.h>
 #include <softgrasp/materials/material.h>
 #include <softgrasp/materials/tensor_algebra.h>
 #include <sstream>
@@ -124,6 +125,112 @@ namespace softgrasp
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
           P[i][j][lane] = 0;
+    }
+  }
+
+  namespace
+  {
+    using V = simd::Double;
+
+    /// det F of row-major F.
+    V det3(const std::array<V, 9> &F)
+    {
+      return F[0] * (F[4] * F[8] - F[5] * F[7]) -
+             F[1] * (F[3] * F[8] - F[5] * F[6]) +
+             F[2] * (F[3] * F[7] - F[4] * F[6]);
+    }
+
+    /// C = F^T F in the symmetric order 00, 11, 22, 01, 02, 12.
+    std::array<V, 6> right_cauchy_green(const std::array<V, 9> &F)
+    {
+      const auto column = [&](const unsigned int a, const unsigned int b)
+      { return F[a] * F[b] + F[3 + a] * F[3 + b] + F[6 + a] * F[6 + b]; };
+      return {{column(0, 0),
+               column(1, 1),
+               column(2, 2),
+               column(0, 1),
+               column(0, 2),
+               column(1, 2)}};
+    }
+
+    std::array<V, 9> load_tensor(const std::array<PointValues, 9> &values,
+                                 const unsigned int                k)
+    {
+      std::array<V, 9> F;
+      for (unsigned int i = 0; i < 9; ++i)
+        F[i] = simd::load(&values[i][k]);
+      return F;
+    }
+  } // namespace
+
+  void Material::first_piola_block(MaterialPointBlock &b) const
+  {
+    // Padding up to the widest SIMD width: F = I, p = 0.
+    const unsigned int n = b.n_points;
+    for (unsigned int k = n;
+         k < (n + simd::max_width - 1) / simd::max_width * simd::max_width;
+         ++k)
+    {
+      for (unsigned int i = 0; i < 9; ++i)
+        b.F[i][k] = (i % 4 == 0) ? 1.0 : 0.0;
+      b.pressure[k] = 0;
+    }
+    // Pass 1: J, f = J^{-2/3} and Cbar = f C for the isochoric model.
+    IsochoricPointBlock &iso = b.isochoric;
+    iso.n_points             = n;
+    PointValues J, f;
+    for (unsigned int k = 0; k < n; k += simd::width)
+    {
+      const auto F  = load_tensor(b.F, k);
+      const V    j  = det3(F);
+      const auto C  = right_cauchy_green(F);
+      const V    c  = simd::stdx::cbrt(j);
+      const V    fk = 1.0 / (c * c);
+      simd::store(j, &J[k]);
+      simd::store(fk, &f[k]);
+      for (unsigned int i = 0; i < 6; ++i)
+        simd::store(fk * C[i], &iso.Cbar[i][k]);
+    }
+    model->evaluate_block(iso);
+    PointValues U, dU;
+    if (!b.given_pressure)
+      volumetric.evaluate_block(n, J, U, dU);
+    // Pass 2: P = F S, written with F C^{-1} = cof(F) / J:
+    //   P = (J U' - 2/3 f X:C) / J cof(F) + 2 f F X.
+    const PointValues &pressure = b.given_pressure ? b.pressure : dU;
+    for (unsigned int k = 0; k < n; k += simd::width)
+    {
+      const auto       F  = load_tensor(b.F, k);
+      const auto       C  = right_cauchy_green(F);
+      const V          j  = simd::load(&J[k]);
+      const V          fk = simd::load(&f[k]);
+      std::array<V, 6> X;
+      for (unsigned int i = 0; i < 6; ++i)
+        X[i] = simd::load(&iso.X[i][k]);
+      const V XC = X[0] * C[0] + X[1] * C[1] + X[2] * C[2] +
+                   2.0 * (X[3] * C[3] + X[4] * C[4] + X[5] * C[5]);
+      const V a  = (j * simd::load(&pressure[k]) - (2.0 / 3.0) * fk * XC) / j;
+      const V f2 = 2.0 * fk;
+      // X as a full row-major matrix (symmetric)
+      const std::array<V, 9> Xm = {
+          {X[0], X[3], X[4], X[3], X[1], X[5], X[4], X[5], X[2]}};
+      for (unsigned int r = 0; r < 3; ++r)
+      {
+        // rows of cof(F): cross products of the other two rows of F
+        const unsigned int     r1 = (r + 1) % 3, r2 = (r + 2) % 3;
+        const std::array<V, 3> cof = {
+            {F[3 * r1 + 1] * F[3 * r2 + 2] - F[3 * r1 + 2] * F[3 * r2 + 1],
+             F[3 * r1 + 2] * F[3 * r2 + 0] - F[3 * r1 + 0] * F[3 * r2 + 2],
+             F[3 * r1 + 0] * F[3 * r2 + 1] - F[3 * r1 + 1] * F[3 * r2 + 0]}};
+        for (unsigned int c = 0; c < 3; ++c)
+        {
+          const V FX = F[3 * r] * Xm[c] + F[3 * r + 1] * Xm[3 + c] +
+                       F[3 * r + 2] * Xm[6 + c];
+          simd::store(a * cof[c] + f2 * FX, &b.P[3 * r + c][k]);
+        }
+      }
+      const V W = simd::load(&iso.energy[k]);
+      simd::store(b.given_pressure ? W : W + simd::load(&U[k]), &b.energy[k]);
     }
   }
 

@@ -46,6 +46,8 @@ namespace softgrasp
   template InvariantModel::Derivatives<VectorizedDouble>
   MooneyRivlin::derivatives(const VectorizedDouble &,
                             const VectorizedDouble &) const;
+  template InvariantModel::Derivatives<simd::Double>
+  MooneyRivlin::derivatives(const simd::Double &, const simd::Double &) const;
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(
       MooneyRivlin,

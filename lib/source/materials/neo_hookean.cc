@@ -42,6 +42,8 @@ namespace softgrasp
   template InvariantModel::Derivatives<VectorizedDouble>
   NeoHookean::derivatives(const VectorizedDouble &,
                           const VectorizedDouble &) const;
+  template InvariantModel::Derivatives<simd::Double>
+  NeoHookean::derivatives(const simd::Double &, const simd::Double &) const;
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(NeoHookean,
                                      "neo-Hookean",

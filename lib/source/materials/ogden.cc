@@ -1,6 +1,7 @@
 #include <cmath>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/base/simd.h>
 #include <softgrasp/materials/ogden.h>
 #include <softgrasp/materials/tensor_algebra.h>
 
@@ -44,25 +45,124 @@ namespace softgrasp
             "mu_p the sign of alpha_p (Ogden's stability condition).");
   }
 
-  double Ogden::phi(const double c, const unsigned int derivative) const
+  template <typename Number>
+  Number Ogden::phi(const Number &c, const unsigned int derivative) const
   {
-    double value = 0;
+    using std::pow; // and simd::stdx::pow by argument-dependent lookup
+    Number value = 0.0;
     for (unsigned int p = 0; p < moduli.size(); ++p)
     {
       const double a = 0.5 * exponents[p];
       switch (derivative)
       {
       case 0:
-        value += moduli[p] / exponents[p] * (std::pow(c, a) - 1.0);
+        value += moduli[p] / exponents[p] * (pow(c, a) - 1.0);
         break;
       case 1:
-        value += 0.5 * moduli[p] * std::pow(c, a - 1.0);
+        value += 0.5 * moduli[p] * pow(c, a - 1.0);
         break;
       default:
-        value += 0.5 * moduli[p] * (a - 1.0) * std::pow(c, a - 2.0);
+        value += 0.5 * moduli[p] * (a - 1.0) * pow(c, a - 2.0);
       }
     }
     return value;
+  }
+
+  namespace
+  {
+    using V = simd::Double;
+
+    /// A symmetric 3x3 matrix (00, 11, 22, 01, 02, 12) being diagonalised
+    /// and the accumulated rotation Q (row-major), A_0 = Q diag Q^T.
+    struct Jacobi
+    {
+      std::array<V, 6> A;
+      std::array<V, 9> Q;
+
+      /// Entry (i, j) of A.
+      V &a(const unsigned int i, const unsigned int j)
+      {
+        static constexpr unsigned int index[3][3] = {
+            {0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+        return A[index[i][j]];
+      }
+
+      /// The rotation in the (p, q) plane that annihilates A_pq (Golub and
+      /// Van Loan, sec. 8.5.2), lanes with A_pq = 0 unchanged.
+      void rotate(const unsigned int p, const unsigned int q)
+      {
+        const unsigned int r           = 3 - p - q;
+        const V            apq         = a(p, q);
+        const auto         zero        = apq == 0.0;
+        V                  theta       = (a(q, q) - a(p, p)) / (2.0 * apq);
+        simd::stdx::where(zero, theta) = 0.0;
+        V t                            = 1.0 /
+              (simd::stdx::abs(theta) + simd::stdx::sqrt(theta * theta + 1.0));
+        simd::stdx::where(theta < 0.0, t) = -t;
+        simd::stdx::where(zero, t)        = 0.0;
+        const V c = 1.0 / simd::stdx::sqrt(t * t + 1.0), s = t * c;
+        a(p, p) -= t * apq;
+        a(q, q) += t * apq;
+        a(p, q)     = 0.0;
+        const V arp = a(r, p), arq = a(r, q);
+        a(r, p) = c * arp - s * arq;
+        a(r, q) = s * arp + c * arq;
+        for (unsigned int i = 0; i < 3; ++i)
+        {
+          const V qp = Q[3 * i + p], qq = Q[3 * i + q];
+          Q[3 * i + p] = c * qp - s * qq;
+          Q[3 * i + q] = s * qp + c * qq;
+        }
+      }
+
+      /// Cyclic sweeps until the off-diagonal part is at round-off.
+      void diagonalise()
+      {
+        for (unsigned int sweep = 0; sweep < 12; ++sweep)
+        {
+          const V off      = A[3] * A[3] + A[4] * A[4] + A[5] * A[5];
+          const V diagonal = A[0] * A[0] + A[1] * A[1] + A[2] * A[2];
+          if (simd::stdx::all_of(off <= 1e-36 * diagonal))
+            return;
+          rotate(0, 1);
+          rotate(0, 2);
+          rotate(1, 2);
+        }
+      }
+    };
+  } // namespace
+
+  void Ogden::evaluate_block(IsochoricPointBlock &block) const
+  {
+    for (unsigned int k = 0; k < block.n_points; k += simd::width)
+    {
+      Jacobi jacobi;
+      for (unsigned int i = 0; i < 6; ++i)
+        jacobi.A[i] = simd::load(&block.Cbar[i][k]);
+      for (unsigned int i = 0; i < 9; ++i)
+        jacobi.Q[i] = (i % 4 == 0) ? 1.0 : 0.0;
+      jacobi.diagonalise();
+      // Psi = sum_i phi(c_i), dPsi/dCbar = sum_i phi'(c_i) q_i (x) q_i
+      V                W = 0.0;
+      std::array<V, 6> X;
+      X.fill(0.0);
+      for (unsigned int i = 0; i < 3; ++i)
+      {
+        const V c = jacobi.A[i];
+        W += phi(c, 0);
+        const V d1 = phi(c, 1);
+        const V q0 = jacobi.Q[i], q1 = jacobi.Q[3 + i], q2 = jacobi.Q[6 + i];
+        X[0] += d1 * q0 * q0;
+        X[1] += d1 * q1 * q1;
+        X[2] += d1 * q2 * q2;
+        X[3] += d1 * q0 * q1;
+        X[4] += d1 * q0 * q2;
+        X[5] += d1 * q1 * q2;
+      }
+      simd::store(W, &block.energy[k]);
+      for (unsigned int i = 0; i < 6; ++i)
+        simd::store(X[i], &block.X[i][k]);
+    }
   }
 
   void Ogden::evaluate(const SymmetricTensor<2, 3> &Cbar,

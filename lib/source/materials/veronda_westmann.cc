@@ -35,8 +35,9 @@ namespace softgrasp
   InvariantModel::Derivatives<Number>
   VerondaWestmann::derivatives(const Number &I1, const Number &I2) const
   {
+    using std::exp; // and simd::stdx::exp by argument-dependent lookup
     Derivatives<Number> d;
-    const Number        e = std::exp(c2 * (I1 - 3.0));
+    const Number        e = exp(c2 * (I1 - 3.0));
     d.W                   = c1 * (e - 1.0) - 0.5 * c1 * c2 * (I2 - 3.0);
     d.W1                  = c1 * c2 * e;
     d.W2                  = -0.5 * c1 * c2;
@@ -49,6 +50,9 @@ namespace softgrasp
   template InvariantModel::Derivatives<VectorizedDouble>
   VerondaWestmann::derivatives(const VectorizedDouble &,
                                const VectorizedDouble &) const;
+  template InvariantModel::Derivatives<simd::Double>
+  VerondaWestmann::derivatives(const simd::Double &,
+                               const simd::Double &) const;
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(
       VerondaWestmann,

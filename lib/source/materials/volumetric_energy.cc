@@ -1,6 +1,7 @@
 #include <array>
 #include <cmath>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/simd.h>
 #include <softgrasp/materials/volumetric_energy.h>
 #include <utility>
 
@@ -51,32 +52,59 @@ namespace softgrasp
     return kappa;
   }
 
-  double VolumetricEnergy::energy(const double J) const
+  template <typename Number>
+  Number VolumetricEnergy::energy_of(const Number &J) const
   {
+    using std::log; // and simd::stdx::log by argument-dependent lookup
     switch (type)
     {
     case Type::quadratic:
-      return 0.5 * kappa * (J - 1.0) * (J - 1.0);
+      return (0.5 * kappa) * (J - 1.0) * (J - 1.0);
     case Type::logarithmic:
-      return 0.5 * kappa * std::log(J) * std::log(J);
+      return (0.5 * kappa) * log(J) * log(J);
     case Type::simo_taylor:
-      return 0.25 * kappa * (J * J - 1.0 - 2.0 * std::log(J));
+      return (0.25 * kappa) * (J * J - 1.0 - 2.0 * log(J));
     }
-    return 0;
+    return Number(0.0);
   }
 
-  double VolumetricEnergy::first_derivative(const double J) const
+  template <typename Number>
+  Number VolumetricEnergy::first_derivative_of(const Number &J) const
   {
+    using std::log;
     switch (type)
     {
     case Type::quadratic:
       return kappa * (J - 1.0);
     case Type::logarithmic:
-      return kappa * std::log(J) / J;
+      return kappa * log(J) / J;
     case Type::simo_taylor:
-      return 0.5 * kappa * (J - 1.0 / J);
+      return (0.5 * kappa) * (J - 1.0 / J);
     }
-    return 0;
+    return Number(0.0);
+  }
+
+  double VolumetricEnergy::energy(const double J) const
+  {
+    return energy_of(J);
+  }
+
+  double VolumetricEnergy::first_derivative(const double J) const
+  {
+    return first_derivative_of(J);
+  }
+
+  void VolumetricEnergy::evaluate_block(const unsigned int n_points,
+                                        const PointValues &J,
+                                        PointValues       &U,
+                                        PointValues       &dU) const
+  {
+    for (unsigned int k = 0; k < n_points; k += simd::width)
+    {
+      const simd::Double j = simd::load(&J[k]);
+      simd::store(energy_of(j), &U[k]);
+      simd::store(first_derivative_of(j), &dU[k]);
+    }
   }
 
   double VolumetricEnergy::second_derivative(const double J) const

@@ -46,13 +46,17 @@ namespace softgrasp
   {
     Derivatives<Number> d;
     const Number        x = I1 - 3.0;
+    // powers by products: x^(i-2), x^(i-1), x^i
+    Number x_i_minus_2 = 0.0, x_i_minus_1 = 1.0, x_i = x;
     for (unsigned int i = 1; i <= coefficients.size(); ++i)
     {
       const double c = coefficients[i - 1];
-      d.W += c * std::pow(x, double(i));
-      d.W1 += c * i * std::pow(x, i - 1.0);
-      if (i >= 2)
-        d.W11 += c * i * (i - 1.0) * std::pow(x, i - 2.0);
+      d.W += c * x_i;
+      d.W1 += (c * i) * x_i_minus_1;
+      d.W11 += (c * i * (i - 1.0)) * x_i_minus_2;
+      x_i_minus_2 = x_i_minus_1;
+      x_i_minus_1 = x_i;
+      x_i         = x_i * x;
     }
     return d;
   }
@@ -61,6 +65,8 @@ namespace softgrasp
   Yeoh::derivatives(const double &, const double &) const;
   template InvariantModel::Derivatives<VectorizedDouble>
   Yeoh::derivatives(const VectorizedDouble &, const VectorizedDouble &) const;
+  template InvariantModel::Derivatives<simd::Double>
+  Yeoh::derivatives(const simd::Double &, const simd::Double &) const;
 
   SOFTGRASP_REGISTER_ISOCHORIC_MODEL(Yeoh,
                                      "Yeoh",

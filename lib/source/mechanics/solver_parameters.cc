@@ -350,6 +350,14 @@ namespace softgrasp
                       "Stop the run (writing the last good state) when the "
                       "relative energy balance error exceeds this: the sign "
                       "of an unstable step. Unit: 1.");
+    prm.declare_entry("Force kernel",
+                      "vectorized",
+                      Patterns::Selection("vectorized|reference"),
+                      "Implementation of the internal forces: 'vectorized' "
+                      "(explicit SIMD over cells, the fast default) or "
+                      "'reference' (deal.II's FEEvaluation, one cell at a "
+                      "time). Both give the same forces to round-off; the "
+                      "reference is for comparisons and benchmarks.");
     prm.leave_subsection();
   }
 
@@ -365,6 +373,7 @@ namespace softgrasp
     mass_damping = section.get_positive("Mass damping", "1/s", true);
     energy_balance_limit =
         section.get_positive("Energy balance limit", "1", true);
+    vectorized_force_kernel = prm.get("Force kernel") == "vectorized";
     prm.leave_subsection();
   }
 

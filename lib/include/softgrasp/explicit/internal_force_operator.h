@@ -6,6 +6,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/matrix_free/matrix_free.h>
+#include <memory>
+#include <softgrasp/explicit/vectorized_force_kernel.h>
 #include <softgrasp/materials/material_library.h>
 #include <vector>
 
@@ -23,11 +25,23 @@ namespace softgrasp
    * batch shares one material. 2D is plane strain.
    *
    * This is the kernel of the explicit solver: one apply() per time step.
+   * Two implementations of the same forces: the vectorised kernel
+   * (VectorizedForceKernel, explicit SIMD over cells; the default) and the
+   * reference kernel (FEEvaluation, one cell at a time with deal.II's
+   * vectorisation width), which also handles the cells with hanging-node
+   * constraints of the vectorised one.
    */
   template <int dim> class InternalForceOperator
   {
   public:
     using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
+
+    /// Which implementation evaluates the forces.
+    enum class Kernel
+    {
+      vectorized, ///< VectorizedForceKernel (reference for constrained cells)
+      reference   ///< FEEvaluation for every cell
+    };
 
     /// What apply() found besides the forces.
     struct Result
@@ -50,7 +64,8 @@ namespace softgrasp
                           const dealii::DoFHandler<dim>           &dofs,
                           const dealii::AffineConstraints<double> &constraints,
                           const MaterialLibrary                   &materials,
-                          const bool mean_dilatation = false);
+                          const bool   mean_dilatation = false,
+                          const Kernel kernel          = Kernel::vectorized);
 
     void initialize_dof_vector(VectorType &vector) const;
 
@@ -70,10 +85,16 @@ namespace softgrasp
                      const VectorType                            &src,
                      const std::pair<unsigned int, unsigned int> &cells) const;
 
-    dealii::MatrixFree<dim, double> data;
-    const MaterialLibrary          &materials;
-    unsigned int                    degree;
-    bool                            mean_dilatation;
+    /// The reference kernel on the cell batches in @p cells.
+    void apply_reference(const VectorType                &u,
+                         VectorType                      &f,
+                         const std::vector<unsigned int> &cells) const;
+
+    dealii::MatrixFree<dim, double>             data;
+    std::unique_ptr<VectorizedForceKernel<dim>> vectorized;
+    const MaterialLibrary                      &materials;
+    unsigned int                                degree;
+    bool                                        mean_dilatation;
     /// Structural directions per (cell batch, quadrature point, lane), for
     /// anisotropic materials only (empty otherwise).
     std::vector<StructuralDirections> directions;

@@ -40,6 +40,7 @@ namespace softgrasp
                           const StructuralDirections          &directions,
                           const bool                           with_second_derivative,
                           Response                            &response) const override;
+    void         evaluate_block(IsochoricPointBlock &block) const override;
     double       initial_shear_modulus() const override;
     unsigned int n_structural_directions() const override;
     StructuralDirections
@@ -47,6 +48,14 @@ namespace softgrasp
     std::string summary() const override;
 
   private:
+    /// A fibre family's energy k1/(2 k2) (exp(k2 E^2) - 1) and dPsi/dE =
+    /// k1 E exp(k2 E^2) at a stretched state E >= 0, for double and
+    /// simd::Double.
+    template <typename Number>
+    void fibre_response(const Number &E, Number &energy, Number &slope) const;
+    /// Throws unless @p n equals the number of fibre families.
+    void check_directions(const unsigned int n) const;
+
     double       mu       = 0; ///< matrix shear modulus (Pa)
     double       k1       = 0; ///< fibre stress scale (Pa)
     double       k2       = 0; ///< fibre exponential stiffening (1)

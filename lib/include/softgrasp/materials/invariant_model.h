@@ -1,6 +1,7 @@
 #ifndef softgrasp_materials_invariant_model_h
 #define softgrasp_materials_invariant_model_h
 
+#include <softgrasp/base/simd.h>
 #include <softgrasp/materials/isochoric_model.h>
 
 namespace softgrasp
@@ -37,20 +38,34 @@ namespace softgrasp
                    dealii::SymmetricTensor<2, 3, VectorizedDouble>
                        &first_derivative) const final;
 
+    void evaluate_block(IsochoricPointBlock &block) const final;
+
   protected:
+    /// Invariants in, W and its first partial derivatives out, for a block
+    /// of points (structure of arrays; see IsochoricPointBlock for padding).
+    struct InvariantBlock
+    {
+      unsigned int n_points = 0;
+      PointValues  I1, I2, W, W1, W2;
+    };
+
     virtual Derivatives<double>
     invariant_derivatives(const double &I1, const double &I2) const = 0;
     virtual Derivatives<VectorizedDouble>
-    invariant_derivatives(const VectorizedDouble &I1,
-                          const VectorizedDouble &I2) const = 0;
+                 invariant_derivatives(const VectorizedDouble &I1,
+                                       const VectorizedDouble &I2) const = 0;
+    virtual void invariant_derivatives(InvariantBlock &block) const      = 0;
   };
 
   /**
    * An invariant model from one formula: @p Model defines
    *   template <typename Number>
    *   Derivatives<Number> derivatives(const Number &I1, const Number &I2)
-   * const; for double and VectorizedDouble, and this class makes both virtual
-   * overrides of it (curiously recurring template pattern).
+   * const; for double, VectorizedDouble and simd::Double, and this class
+   * makes the virtual overrides of it (curiously recurring template
+   * pattern). The library, its tests and its consumers are built with the
+   * same SIMD flags (the CMake target carries them), so simd::Double is the
+   * same type everywhere.
    */
   template <typename Model>
   class InvariantModelImplementation : public InvariantModel
@@ -67,6 +82,19 @@ namespace softgrasp
                           const VectorizedDouble &I2) const final
     {
       return static_cast<const Model &>(*this).derivatives(I1, I2);
+    }
+
+    void invariant_derivatives(InvariantBlock &b) const final
+    {
+      for (unsigned int k = 0; k < b.n_points; k += simd::width)
+      {
+        const Derivatives<simd::Double> d =
+            static_cast<const Model &>(*this).derivatives(simd::load(&b.I1[k]),
+                                                          simd::load(&b.I2[k]));
+        simd::store(d.W, &b.W[k]);
+        simd::store(d.W1, &b.W1[k]);
+        simd::store(d.W2, &b.W2[k]);
+      }
     }
   };
 } // namespace softgrasp

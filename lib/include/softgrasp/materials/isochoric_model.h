@@ -8,6 +8,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/vectorization.h>
 #include <softgrasp/base/plugin_registry.h>
+#include <softgrasp/materials/point_values.h>
 #include <string>
 
 namespace softgrasp
@@ -21,6 +22,26 @@ namespace softgrasp
     static constexpr unsigned int                    max_directions = 2;
     unsigned int                                     n_directions   = 0;
     std::array<dealii::Tensor<1, 3>, max_directions> direction;
+  };
+
+  /**
+   * Input and output of IsochoricModel::evaluate_block() for up to
+   * point_block_size points, structure of arrays. Symmetric components are
+   * stored in the order 00, 11, 22, 01, 02, 12. Points from n_points up to
+   * the next multiple of 8 may be evaluated too and must hold a valid state
+   * (e.g. Cbar = I); their results are ignored.
+   */
+  struct IsochoricPointBlock
+  {
+    unsigned int               n_points = 0;
+    std::array<PointValues, 6> Cbar; ///< isochoric right Cauchy-Green tensor
+    /// Component d of structural direction a at [3 a + d] (anisotropic
+    /// models only; n_directions of them per point).
+    unsigned int n_directions = 0;
+    std::array<PointValues, 3 * StructuralDirections::max_directions>
+                               directions;
+    PointValues                energy; ///< output: Psi_iso (Pa)
+    std::array<PointValues, 6> X;      ///< output: dPsi_iso/dCbar (Pa)
   };
 
   /**
@@ -59,7 +80,6 @@ namespace softgrasp
                           const bool with_second_derivative,
                           Response  &response) const = 0;
 
-    /// The small-strain shear modulus mu_0 (Pa).
     /**
      * W and dW/dCbar for a batch of points, one per lane of the vectorized
      * arguments (the explicit solver's matrix-free internal forces). Lanes
@@ -77,6 +97,15 @@ namespace softgrasp
                    dealii::SymmetricTensor<2, 3, VectorizedDouble>
                        &first_derivative) const;
 
+    /**
+     * W and dW/dCbar for a block of points (the vectorised stress kernel of
+     * the explicit solver). The default evaluates point by point with
+     * evaluate(); models with a vectorisable formula override it with
+     * explicit SIMD (softgrasp/base/simd.h), from the same formula.
+     */
+    virtual void evaluate_block(IsochoricPointBlock &block) const;
+
+    /// The small-strain shear modulus mu_0 (Pa).
     virtual double initial_shear_modulus() const = 0;
 
     /// Read the model's parameters; @p path names the subsection in errors.

@@ -25,6 +25,28 @@ namespace softgrasp
   };
 
   /**
+   * Input and output of Material::first_piola_block() for up to
+   * point_block_size points, structure of arrays (the vectorised stress
+   * kernel of the explicit solver). Tensors are stored row by row, F_ij at
+   * [3 i + j].
+   */
+  struct MaterialPointBlock
+  {
+    unsigned int               n_points = 0;
+    std::array<PointValues, 9> F; ///< deformation gradients, det F > 0 (1)
+    /// With given_pressure, the volumetric stress uses pressure (Pa)
+    /// instead of U'(J) (the mean-dilatation form).
+    bool        given_pressure = false;
+    PointValues pressure;
+    /// Anisotropic materials: set isochoric.n_directions and
+    /// isochoric.directions; the rest of it is scratch space.
+    IsochoricPointBlock        isochoric;
+    std::array<PointValues, 9> P;      ///< output: first Piola stress (Pa)
+    PointValues                energy; ///< output: Psi, or Psi_iso with
+                                       ///< given_pressure (Pa)
+  };
+
+  /**
    * A hyperelastic material evaluated at one quadrature point: the
    * decoupled strain energy Psi(C) = U(J) + Psi_iso(Cbar), Cbar = J^{-2/3} C,
    * with an IsochoricModel and a VolumetricEnergy, plus a reference density.
@@ -107,6 +129,14 @@ namespace softgrasp
                            dealii::Tensor<2, 3, VectorizedDouble> &P,
                            VectorizedDouble                       &energy,
                            const VectorizedDouble *pressure = nullptr) const;
+
+    /**
+     * P and Psi for a block of points, as first_piola_batch() but with
+     * explicit SIMD over the points (softgrasp/base/simd.h): the explicit
+     * solver's vectorised stress kernel. Points from n_points up to the
+     * next multiple of 8 are set to F = I here and evaluated too.
+     */
+    void first_piola_block(MaterialPointBlock &block) const;
 
     /// Psi(F) (Pa).
     double strain_energy(const dealii::Tensor<2, 3> &F,

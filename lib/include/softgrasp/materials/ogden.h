@@ -33,12 +33,17 @@ namespace softgrasp
                          const StructuralDirections          &directions,
                          const bool                           with_second_derivative,
                          Response                            &response) const override;
+    /// Explicit SIMD over the points: eigenvalues and eigenvectors of Cbar
+    /// by cyclic Jacobi rotations to round-off, then the same phi().
+    void        evaluate_block(IsochoricPointBlock &block) const override;
     double      initial_shear_modulus() const override;
     std::string summary() const override;
 
   private:
-    /// phi(c) = sum_p mu_p/alpha_p (c^{alpha_p/2} - 1) and derivatives.
-    double phi(const double c, const unsigned int derivative) const;
+    /// phi(c) = sum_p mu_p/alpha_p (c^{alpha_p/2} - 1) and derivatives, for
+    /// double and simd::Double.
+    template <typename Number>
+    Number phi(const Number &c, const unsigned int derivative) const;
 
     std::vector<double> moduli;    ///< mu_p (Pa)
     std::vector<double> exponents; ///< alpha_p (1)

@@ -1,6 +1,7 @@
 #ifndef softgrasp_materials_volumetric_energy_h
 #define softgrasp_materials_volumetric_energy_h
 
+#include <softgrasp/materials/point_values.h>
 #include <string>
 
 namespace softgrasp
@@ -37,10 +38,25 @@ namespace softgrasp
     double first_derivative(const double J) const;  ///< dU/dJ, Pa
     double second_derivative(const double J) const; ///< d2U/dJ2, Pa
 
+    /**
+     * U and dU/dJ (Pa) for a block of points (the vectorised stress
+     * kernel): entries up to n_points rounded up to a multiple of 8 are
+     * evaluated, so J must hold valid values (J > 0) there.
+     */
+    void evaluate_block(const unsigned int n_points,
+                        const PointValues &J,
+                        PointValues       &U,
+                        PointValues       &dU) const;
+
     double      bulk_modulus() const;
     std::string name() const;
 
   private:
+    /// The formulas, for double and simd::Double.
+    template <typename Number> Number energy_of(const Number &J) const;
+    template <typename Number>
+    Number first_derivative_of(const Number &J) const;
+
     Type   type  = Type::simo_taylor;
     double kappa = 0;
   };

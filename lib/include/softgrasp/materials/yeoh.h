@@ -20,8 +20,8 @@ namespace softgrasp
     double      initial_shear_modulus() const override;
     std::string summary() const override;
 
-    /// W(I1bar, I2bar) and its partial derivatives, for double and
-    /// VectorizedDouble.
+    /// W(I1bar, I2bar) and its partial derivatives, for double,
+    /// VectorizedDouble and simd::Double.
     template <typename Number>
     Derivatives<Number> derivatives(const Number &I1, const Number &I2) const;
 

@@ -129,6 +129,9 @@ namespace softgrasp
     double mass_damping = 0;
     /// stop when the relative energy balance error exceeds this; 1
     double energy_balance_limit = 0.05;
+    /// internal forces by the vectorised kernel (true) or the reference
+    /// FEEvaluation kernel (false); same forces to round-off
+    bool vectorized_force_kernel = true;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
