@@ -1,6 +1,8 @@
 // Throughput of the material library: stress + consistent tangent
 // evaluations per second on one core, per model (and stress alone), at a
-// fixed non-trivial deformation gradient. Results: doc/benchmarks.md.
+// fixed non-trivial deformation gradient, and the first Piola stress of the
+// explicit solver's batch (deal.II's SIMD width) and block (explicit SIMD)
+// paths. Results: doc/benchmarks.md.
 //
 //   build/benchmarks/material_throughput --benchmark_min_time=0.5
 
@@ -70,6 +72,35 @@ namespace
     state.SetItemsProcessed(state.iterations() * width);
   }
 
+  /// First Piola stress of a block of points with explicit SIMD (the
+  /// explicit solver's vectorised kernel); items are points.
+  void run_block(benchmark::State &state, const std::string &fragment)
+  {
+    const auto material =
+        MaterialLibrary::create_from_fragment(fragment, "benchmark");
+    const StructuralDirections d  = material->structural_directions(Point<3>());
+    const Tensor<2, 3>         F1 = deformation();
+    MaterialPointBlock         block;
+    block.n_points               = point_block_size;
+    block.isochoric.n_directions = d.n_directions;
+    for (unsigned int k = 0; k < point_block_size; ++k)
+    {
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          block.F[3 * i + j][k] = F1[i][j] * (1.0 + 1e-3 * k);
+      for (unsigned int a = 0; a < d.n_directions; ++a)
+        for (unsigned int c = 0; c < 3; ++c)
+          block.isochoric.directions[3 * a + c][k] = d.direction[a][c];
+    }
+    for (auto _ : state)
+    {
+      material->first_piola_block(block);
+      benchmark::DoNotOptimize(block.P);
+      benchmark::DoNotOptimize(block.energy);
+    }
+    state.SetItemsProcessed(state.iterations() * point_block_size);
+  }
+
   const std::vector<std::pair<std::string, std::string>> models = {
       {"neo-Hookean",
        std::string("set Model = neo-Hookean\n") + vol +
@@ -108,6 +139,8 @@ namespace
           ("stress/" + name).c_str(), run, fragment, false);
       benchmark::RegisterBenchmark(
           ("first-Piola-batch/" + name).c_str(), run_batch, fragment);
+      benchmark::RegisterBenchmark(
+          ("first-Piola-block/" + name).c_str(), run_block, fragment);
     }
     return true;
   }();

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <softgrasp/explicit/central_difference.h>
 
@@ -129,22 +130,81 @@ namespace softgrasp
   }
 
   template <int dim>
+  void CentralDifference<dim>::set_constrained_dofs(
+      const std::vector<types::global_dof_index> &dofs)
+  {
+    constrained.clear();
+    const IndexSet &owned = u.locally_owned_elements();
+    for (const auto i : dofs)
+      if (owned.is_element(i) && !fixed.is_element(i))
+        constrained.push_back(owned.index_within_set(i));
+    std::sort(constrained.begin(), constrained.end());
+    constrained.erase(std::unique(constrained.begin(), constrained.end()),
+                      constrained.end());
+    constrained_trial.resize(constrained.size());
+    f_contact = 0;
+  }
+
+  template <int dim>
   void CentralDifference<dim>::apply_constraints(const double dt,
                                                  const double h)
   {
-    f_contact = 0;
     if (!constrain)
-      return;
-    u_trial = u;
-    constrain(t + dt, dt, h, u_prev, u);
-    for (unsigned int k = 0; k < is_free.size(); ++k)
     {
-      const double du = u.local_element(k) - u_trial.local_element(k);
+      f_contact = 0;
+      return;
+    }
+    // A correction du of a free dof is the contact force M du / (dt h).
+    const auto correct = [&](const unsigned int k, const double trial)
+    {
+      const double du            = u.local_element(k) - trial;
+      f_contact.local_element(k) = 0;
       if (du == 0 || !is_free[k])
-        continue;
+        return;
       v_half.local_element(k) += du / dt;
       f_contact.local_element(k) = mass.local_element(k) * du / (dt * h);
+    };
+    if (constrained.empty()) // every dof may change
+    {
+      u_trial = u;
+      constrain(t + dt, dt, h, u_prev, u);
+      for (unsigned int k = 0; k < is_free.size(); ++k)
+        correct(k, u_trial.local_element(k));
+      return;
     }
+    for (unsigned int j = 0; j < constrained.size(); ++j)
+      constrained_trial[j] = u.local_element(constrained[j]);
+    constrain(t + dt, dt, h, u_prev, u);
+    for (unsigned int j = 0; j < constrained.size(); ++j)
+      correct(constrained[j], constrained_trial[j]);
+  }
+
+  template <int dim>
+  void CentralDifference<dim>::predict(const double dt, const double h)
+  {
+    if (!started)
+      v_half = v; // v^{-1/2} := v^0 for the first step's mean velocity
+    const unsigned int n = u.locally_owned_size();
+    double *const uu = u.begin(), *const vv = v_half.begin();
+    double *const up = u_prev.begin(), *const vp = v_half_prev.begin();
+    const double *const ap = a_prev.begin();
+    for (unsigned int k = 0; k < n; ++k)
+    {
+      up[k]          = uu[k];
+      vp[k]          = vv[k];
+      const double v = vv[k] + h * ap[k];
+      vv[k]          = v;
+      uu[k] += dt * v;
+    }
+    // ghost entries as a vector copy (operator=) leaves them
+    if (u.has_ghost_elements())
+      u_prev.update_ghost_values();
+    else
+      u_prev.zero_out_ghost_values();
+    if (v_half.has_ghost_elements())
+      v_half_prev.update_ghost_values();
+    else
+      v_half_prev.zero_out_ghost_values();
   }
 
   template <int dim>
@@ -218,23 +278,18 @@ namespace softgrasp
   typename CentralDifference<dim>::StepResult
   CentralDifference<dim>::step(const double dt)
   {
-    // Keep the state before the step: copies of u and v^{n-1/2}; the force
-    // vectors are swapped (acceleration() overwrites f, f_ext and a).
-    u_prev = u;
-    if (!started)
-      v_half = v; // v^{-1/2} := v^0 for the first step's mean velocity
-    v_half_prev = v_half;
+    // Keep the state before the step: copies of u and v^{n-1/2} (in
+    // predict()); the force vectors are swapped (acceleration() overwrites
+    // f, f_ext and a).
     f_prev.swap(f);
     f_ext_prev.swap(f_ext);
     a_prev.swap(a);
     const Energies e_old        = e;
     const double   internal_old = internal_energy, J_old = smallest_J;
     internal_start = internal_energy;
-    // v^{n+1/2}
+    // v^{n+1/2} and u^{n+1}; the fixed dofs move as prescribed
     const double h = started ? 0.5 * (last_dt + dt) : 0.5 * dt;
-    v_half.add(h, a_prev);
-    // u^{n+1}; the fixed dofs move as prescribed
-    u.add(dt, v_half);
+    predict(dt, h);
     if (prescribe)
     {
       prescribe(t + dt, u);

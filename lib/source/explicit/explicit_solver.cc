@@ -82,12 +82,19 @@ namespace softgrasp
     integrator->prescribe = [this](const double t, VectorType &u)
     { prescribe(t, u); };
     if (explicit_contact)
+    {
       integrator->constrain = [this](const double      t,
                                      const double      dt,
                                      const double      h,
                                      const VectorType &u_old,
                                      VectorType       &u)
       { explicit_contact->enforce(t, dt, h, mass, u_old, u); };
+      // contact moves the slave nodes only
+      std::vector<types::global_dof_index> slave_dofs;
+      for (const auto &node : explicit_contact->nodes())
+        slave_dofs.insert(slave_dofs.end(), node.dofs.begin(), node.dofs.end());
+      integrator->set_constrained_dofs(slave_dofs);
+    }
     const double target =
         this->solver_parameters.explicit_dynamics.mass_scaling_time_step;
     if (target > 0)

@@ -79,6 +79,15 @@ namespace softgrasp
                        VectorType       &u)>
         constrain;
 
+    /**
+     * The locally owned dofs (global indices) that constrain() may change
+     * (contact: the slave nodes' dofs). With them, a step copies and
+     * compares only these dofs around constrain() instead of whole
+     * vectors; without (the default), every dof is compared.
+     */
+    void set_constrained_dofs(
+        const std::vector<dealii::types::global_dof_index> &dofs);
+
     /// Refuse steps whose energy balance error exceeds @p limit, from the
     /// 50th step on (before, the energies may be at round-off level).
     void set_balance_limit(const double limit);
@@ -130,6 +139,9 @@ namespace softgrasp
 
   private:
     void acceleration(const double t, const VectorType &u, const VectorType &v);
+    /// Keep u^n and v^{n-1/2}, then v^{n+1/2} = v^{n-1/2} + h a^n and
+    /// u^{n+1} = u^n + dt v^{n+1/2}, in one pass over the vectors.
+    void predict(const double dt, const double h);
     /// 1/2 v.M.v over all ranks (J; J/m in 2D).
     double kinetic_energy(const VectorType &velocity) const;
     /// Apply constrain() to u; turn its corrections into f_c and v.
@@ -154,10 +166,14 @@ namespace softgrasp
     VectorType u_prev, v_half_prev, a_prev, f_prev, f_ext_prev;
     /// Per locally owned dof (local order): 1 if free, 0 if fixed.
     std::vector<unsigned char> is_free;
-    bool                       started = false;
-    Energies                   e, e0;
-    double                     smallest_J = 1, internal_energy = 0;
-    double                     internal_start = 0; ///< U^n of the step
+    /// Local indices of the free dofs constrain() may change (empty: all)
+    /// and their predicted values before constrain().
+    std::vector<unsigned int> constrained;
+    std::vector<double>       constrained_trial;
+    bool                      started = false;
+    Energies                  e, e0;
+    double                    smallest_J = 1, internal_energy = 0;
+    double                    internal_start = 0; ///< U^n of the step
   };
 } // namespace softgrasp
 
