@@ -46,24 +46,27 @@ namespace softgrasp
   }
 
   template <typename Number>
-  Number Ogden::phi(const Number &c, const unsigned int derivative) const
+  void Ogden::phi_and_slope(const Number &c, Number &value, Number &slope) const
   {
     using std::pow; // and simd::stdx::pow by argument-dependent lookup
-    Number value = 0.0;
+    value = 0.0;
+    slope = 0.0;
     for (unsigned int p = 0; p < moduli.size(); ++p)
     {
       const double a = 0.5 * exponents[p];
-      switch (derivative)
-      {
-      case 0:
-        value += moduli[p] / exponents[p] * (pow(c, a) - 1.0);
-        break;
-      case 1:
-        value += 0.5 * moduli[p] * pow(c, a - 1.0);
-        break;
-      default:
-        value += 0.5 * moduli[p] * (a - 1.0) * pow(c, a - 2.0);
-      }
+      const Number q = pow(c, a - 1.0); // one power per term: c^a = q c
+      value += moduli[p] / exponents[p] * (q * c - 1.0);
+      slope += 0.5 * moduli[p] * q;
+    }
+  }
+
+  double Ogden::phi_second(const double c) const
+  {
+    double value = 0;
+    for (unsigned int p = 0; p < moduli.size(); ++p)
+    {
+      const double a = 0.5 * exponents[p];
+      value += 0.5 * moduli[p] * (a - 1.0) * std::pow(c, a - 2.0);
     }
     return value;
   }
@@ -149,8 +152,9 @@ namespace softgrasp
       for (unsigned int i = 0; i < 3; ++i)
       {
         const V c = jacobi.A[i];
-        W += phi(c, 0);
-        const V d1 = phi(c, 1);
+        V       value, d1;
+        phi_and_slope(c, value, d1);
+        W += value;
         const V q0 = jacobi.Q[i], q1 = jacobi.Q[3 + i], q2 = jacobi.Q[6 + i];
         X[0] += d1 * q0 * q0;
         X[1] += d1 * q1 * q1;
@@ -179,10 +183,11 @@ namespace softgrasp
     response.first_derivative = 0;
     for (unsigned int i = 0; i < 3; ++i)
     {
-      c[i]  = eig[i].first;
-      M[i]  = symmetrize(outer_product(eig[i].second, eig[i].second));
-      d1[i] = phi(c[i], 1);
-      response.energy += phi(c[i], 0);
+      c[i] = eig[i].first;
+      M[i] = symmetrize(outer_product(eig[i].second, eig[i].second));
+      double value;
+      phi_and_slope(c[i], value, d1[i]);
+      response.energy += value;
       response.first_derivative += d1[i] * M[i];
     }
     if (!with_second_derivative)
@@ -190,14 +195,15 @@ namespace softgrasp
 
     response.second_derivative = 0;
     for (unsigned int i = 0; i < 3; ++i)
-      response.second_derivative += phi(c[i], 2) * outer_product(M[i], M[i]);
+      response.second_derivative +=
+          phi_second(c[i]) * outer_product(M[i], M[i]);
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = i + 1; j < 3; ++j)
       {
         const double                scale = std::max(1.0, std::max(c[i], c[j]));
         const double                theta = std::abs(c[i] - c[j]) > 1e-6 * scale
                                                 ? (d1[i] - d1[j]) / (c[i] - c[j])
-                                                : phi(0.5 * (c[i] + c[j]), 2);
+                                                : phi_second(0.5 * (c[i] + c[j]));
         const SymmetricTensor<2, 3> G =
             TensorAlgebra::symmetric_dyad(eig[i].second, eig[j].second);
         response.second_derivative += 2.0 * theta * outer_product(G, G);

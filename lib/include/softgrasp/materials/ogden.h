@@ -40,10 +40,12 @@ namespace softgrasp
     std::string summary() const override;
 
   private:
-    /// phi(c) = sum_p mu_p/alpha_p (c^{alpha_p/2} - 1) and derivatives, for
+    /// phi(c) = sum_p mu_p/alpha_p (c^{alpha_p/2} - 1) and phi'(c), for
     /// double and simd::Double.
     template <typename Number>
-    Number phi(const Number &c, const unsigned int derivative) const;
+    void phi_and_slope(const Number &c, Number &value, Number &slope) const;
+    /// phi''(c).
+    double phi_second(const double c) const;
 
     std::vector<double> moduli;    ///< mu_p (Pa)
     std::vector<double> exponents; ///< alpha_p (1)
