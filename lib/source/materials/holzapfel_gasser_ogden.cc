@@ -2,8 +2,8 @@
 #include <deal.II/lac/vector.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
-#include <softgrasp/base/simd.h>
 #include <softgrasp/materials/holzapfel_gasser_ogden.h>
+#include <softgrasp/materials/simd_block.h>
 #include <sstream>
 
 namespace softgrasp
@@ -126,7 +126,8 @@ namespace softgrasp
     const double beta = 1.0 - 3.0 * kappa;
     for (unsigned int k = 0; k < block.n_points; k += simd::width)
     {
-      std::array<V, 6> c, X;
+      std::array<V, 6>      c;
+      simd::SymmetricTensor X;
       for (unsigned int i = 0; i < 6; ++i)
         c[i] = simd::load(&C[i][k]);
       const V I1 = c[0] + c[1] + c[2];
@@ -147,17 +148,11 @@ namespace softgrasp
         fibre_response(E, energy, slope);
         W += energy;
         // X += slope (kappa I + beta n (x) n)
-        const V s = slope * beta;
-        X[0] += slope * kappa + s * n0 * n0;
-        X[1] += slope * kappa + s * n1 * n1;
-        X[2] += slope * kappa + s * n2 * n2;
-        X[3] += s * n0 * n1;
-        X[4] += s * n0 * n2;
-        X[5] += s * n1 * n2;
+        for (unsigned int i = 0; i < 3; ++i)
+          X[i] += slope * kappa;
+        simd::add_outer_product(X, slope * beta, n0, n1, n2);
       }
-      simd::store(W, &block.energy[k]);
-      for (unsigned int i = 0; i < 6; ++i)
-        simd::store(X[i], &block.X[i][k]);
+      simd::store_result(W, X, block, k);
     }
   }
 

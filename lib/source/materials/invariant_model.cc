@@ -1,4 +1,5 @@
 #include <softgrasp/materials/invariant_model.h>
+#include <softgrasp/materials/simd_block.h>
 
 namespace softgrasp
 {
@@ -62,15 +63,13 @@ namespace softgrasp
     // dW/dCbar = W1 I + W2 (I1 I - Cbar)
     for (unsigned int k = 0; k < block.n_points; k += simd::width)
     {
-      const V W1       = simd::load(&invariants.W1[k]);
-      const V W2       = simd::load(&invariants.W2[k]);
-      const V diagonal = W1 + W2 * simd::load(&invariants.I1[k]);
+      const V               W1       = simd::load(&invariants.W1[k]);
+      const V               W2       = simd::load(&invariants.W2[k]);
+      const V               diagonal = W1 + W2 * simd::load(&invariants.I1[k]);
+      simd::SymmetricTensor X;
       for (unsigned int c = 0; c < 6; ++c)
-      {
-        const V value = (c < 3 ? diagonal : V(0.0)) - W2 * simd::load(&C[c][k]);
-        simd::store(value, &block.X[c][k]);
-      }
-      simd::store(simd::load(&invariants.W[k]), &block.energy[k]);
+        X[c] = (c < 3 ? diagonal : V(0.0)) - W2 * simd::load(&C[c][k]);
+      simd::store_result(simd::load(&invariants.W[k]), X, block, k);
     }
   }
 } // namespace softgrasp

@@ -1,8 +1,8 @@
 #include <cmath>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
-#include <softgrasp/base/simd.h>
 #include <softgrasp/materials/ogden.h>
+#include <softgrasp/materials/simd_block.h>
 #include <softgrasp/materials/tensor_algebra.h>
 
 namespace softgrasp
@@ -146,8 +146,8 @@ namespace softgrasp
         jacobi.Q[i] = (i % 4 == 0) ? 1.0 : 0.0;
       jacobi.diagonalise();
       // Psi = sum_i phi(c_i), dPsi/dCbar = sum_i phi'(c_i) q_i (x) q_i
-      V                W = 0.0;
-      std::array<V, 6> X;
+      V                     W = 0.0;
+      simd::SymmetricTensor X;
       X.fill(0.0);
       for (unsigned int i = 0; i < 3; ++i)
       {
@@ -155,17 +155,10 @@ namespace softgrasp
         V       value, d1;
         phi_and_slope(c, value, d1);
         W += value;
-        const V q0 = jacobi.Q[i], q1 = jacobi.Q[3 + i], q2 = jacobi.Q[6 + i];
-        X[0] += d1 * q0 * q0;
-        X[1] += d1 * q1 * q1;
-        X[2] += d1 * q2 * q2;
-        X[3] += d1 * q0 * q1;
-        X[4] += d1 * q0 * q2;
-        X[5] += d1 * q1 * q2;
+        simd::add_outer_product(
+            X, d1, jacobi.Q[i], jacobi.Q[3 + i], jacobi.Q[6 + i]);
       }
-      simd::store(W, &block.energy[k]);
-      for (unsigned int i = 0; i < 6; ++i)
-        simd::store(X[i], &block.X[i][k]);
+      simd::store_result(W, X, block, k);
     }
   }
 
