@@ -138,13 +138,84 @@ namespace softgrasp
 
     static constexpr unsigned int mapping_entries = dim * dim + 1;
 
+    /// Values at the n^dim nodes or Gauss points of a batch's cells.
+    template <int n> using Values = V[power(n, dim)];
+    /// Per component c and reference direction k: [c][k][point].
+    template <int n> using Gradients = V[dim][dim][power(n, dim)];
+    /// Row-major 3x3 F per point.
+    template <int n> using Deformations = V[power(n, dim)][9];
+
+    /// What set-up needs for every batch.
+    struct SetUp
+    {
+      const MatrixFree<dim, double>     &mf;
+      FEValues<dim>                     &fe_values;
+      const std::vector<unsigned int>   &lexicographic;
+      const Utilities::MPI::Partitioner &partitioner;
+    };
+
     void set_up_shapes();
+    /// Cells by material id; cells with constrained DoFs to other_cells.
+    std::map<types::material_id, std::vector<unsigned int>>
+    classify_cells(const MatrixFree<dim, double>   &mf,
+                   const AffineConstraints<double> &constraints);
+    /// The batch of cells[first, first + lanes) (padded) of @p material.
+    void add_batch(const SetUp                     &setup,
+                   const Material                  &material,
+                   const std::vector<unsigned int> &cells,
+                   const unsigned int               first);
+    /// DoF indices, mapping data and directions of one lane of batch @p b.
+    void set_lane(const SetUp       &setup,
+                  const Material    &material,
+                  const unsigned int b,
+                  const unsigned int lane,
+                  const unsigned int cell,
+                  const bool         padding);
+
     template <int n>
     void apply_batch(const unsigned int b,
                      const double      *src,
                      double            *dst,
                      V                 &energy,
                      V                 &min_J) const;
+    template <int n>
+    void gradients(const unsigned int b,
+                   const double      *src,
+                   Gradients<n>      &grad) const;
+    /// F per point; inverted points (and padding) get F = I. Accumulates
+    /// the cells' reference and deformed volumes.
+    template <int n>
+    void deformation(const unsigned int  b,
+                     const Gradients<n> &grad,
+                     Deformations<n>    &F,
+                     V                  &volume,
+                     V                  &dilated,
+                     V                  &min_J) const;
+    /// Mean dilatation: p = U'(v_e / V_e) per cell; adds V_e U to energy.
+    V cell_pressure(const Batch &batch,
+                    const V     &volume,
+                    const V     &dilated,
+                    V           &energy) const;
+    /// t[c][k][q] = JxW sum_j P_cj dxi_k/dx_j; adds Psi JxW to energy.
+    template <int n>
+    void stresses(const unsigned int     b,
+                  const Deformations<n> &F,
+                  const V               &pressure,
+                  Gradients<n>          &t,
+                  V                     &energy) const;
+    /// Forces at the nodes, added into dst lane by lane.
+    template <int n>
+    void
+    scatter_forces(const unsigned int b, Gradients<n> &t, double *dst) const;
+
+    /// The 1D shape data of degree n - 1.
+    template <int n> const Shape1D<n> &shape() const
+    {
+      if constexpr (n == 2)
+        return shape1;
+      else
+        return shape2;
+    }
   };
 
   namespace
@@ -180,29 +251,14 @@ namespace softgrasp
   }
 
   template <int dim>
-  VectorizedForceKernel<dim>::VectorizedForceKernel(
+  std::map<types::material_id, std::vector<unsigned int>>
+  VectorizedForceKernel<dim>::Data::classify_cells(
       const MatrixFree<dim, double>   &mf,
-      const Mapping<dim>              &mapping,
-      const AffineConstraints<double> &constraints,
-      const MaterialLibrary           &materials,
-      const bool                       mean_dilatation)
-      : d(std::make_unique<Data>())
+      const AffineConstraints<double> &constraints)
   {
-    const DoFHandler<dim> &dofs = mf.get_dof_handler();
-    const auto            &fe   = dofs.get_fe();
-    d->degree                   = fe.degree;
-    d->mean_dilatation          = mean_dilatation;
-    d->set_up_shapes();
-    const unsigned int n_nodes = power(d->degree + 1, dim);
-    d->n_q                     = n_nodes;
-    for (const auto id : materials.material_ids())
-      d->n_directions_max = std::max(
-          d->n_directions_max,
-          materials.get(id).isochoric_model().n_structural_directions());
-
-    // Cells by material id; cells with constrained DoFs go to the caller.
     std::map<types::material_id, std::vector<unsigned int>> cells_of;
-    std::vector<types::global_dof_index> indices(fe.dofs_per_cell);
+    std::vector<types::global_dof_index>                    indices(
+        mf.get_dof_handler().get_fe().dofs_per_cell);
     for (unsigned int c = 0; c < mf.n_cell_batches(); ++c)
       for (unsigned int l = 0; l < mf.n_active_entries_per_cell_batch(c); ++l)
       {
@@ -215,75 +271,110 @@ namespace softgrasp
         if (constrained || mf.n_active_entries_per_cell_batch(c) > 1)
         {
           if (l == 0)
-            d->other_cells.push_back(c);
+            other_cells.push_back(c);
           continue;
         }
         cells_of[cell->material_id()].push_back(c);
       }
+    return cells_of;
+  }
 
-    // Per batch: DoF indices, inverse Jacobians and JxW, directions.
+  template <int dim>
+  void VectorizedForceKernel<dim>::Data::add_batch(
+      const SetUp                     &setup,
+      const Material                  &material,
+      const std::vector<unsigned int> &cells,
+      const unsigned int               first)
+  {
+    const unsigned int n_cells =
+        std::min<unsigned int>(lanes, cells.size() - first);
+    batches.push_back({&material, n_cells});
+    dof_indices.resize(dof_indices.size() + dim * n_q * lanes);
+    mapping.resize(mapping.size() + n_q * mapping_entries * lanes);
+    directions.resize(directions.size() + n_q * 3 * n_directions_max * lanes);
+    // padding lanes repeat the first cell with JxW = 0
+    for (unsigned int lane = 0; lane < lanes; ++lane)
+      set_lane(setup,
+               material,
+               batches.size() - 1,
+               lane,
+               cells[first + (lane < n_cells ? lane : 0)],
+               lane >= n_cells);
+  }
+
+  template <int dim>
+  void VectorizedForceKernel<dim>::Data::set_lane(const SetUp       &setup,
+                                                  const Material    &material,
+                                                  const unsigned int b,
+                                                  const unsigned int lane,
+                                                  const unsigned int cell_index,
+                                                  const bool         padding)
+  {
+    const auto &fe   = setup.mf.get_dof_handler().get_fe();
+    const auto  cell = setup.mf.get_cell_iterator(cell_index, 0);
+    std::vector<types::global_dof_index> indices(fe.dofs_per_cell);
+    cell->get_dof_indices(indices);
+    unsigned int *index = &dof_indices[std::size_t(b) * dim * n_q * lanes];
+    for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+    {
+      const auto [component, base] = fe.system_to_component_index(i);
+      index[(component * n_q + setup.lexicographic[base]) * lanes + lane] =
+          setup.partitioner.global_to_local(indices[i]);
+    }
+    setup.fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
+    const unsigned int n_dir = 3 * n_directions_max;
+    for (unsigned int q = 0; q < n_q; ++q)
+    {
+      double *m =
+          &mapping[(std::size_t(b) * n_q + q) * mapping_entries * lanes];
+      const auto &inverse = setup.fe_values.inverse_jacobian(q);
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          m[(i * dim + j) * lanes + lane] =
+              padding ? double(i == j) : inverse[i][j];
+      m[dim * dim * lanes + lane] = padding ? 0.0 : setup.fe_values.JxW(q);
+      if (n_dir == 0)
+        continue;
+      const StructuralDirections s = material.structural_directions(
+          PlaneStrain::to_3d(setup.fe_values.quadrature_point(q)));
+      double *dir = &directions[(std::size_t(b) * n_q + q) * n_dir * lanes];
+      for (unsigned int a = 0; a < s.n_directions; ++a)
+        for (unsigned int k = 0; k < 3; ++k)
+          dir[(3 * a + k) * lanes + lane] = s.direction[a][k];
+    }
+  }
+
+  template <int dim>
+  VectorizedForceKernel<dim>::VectorizedForceKernel(
+      const MatrixFree<dim, double>   &mf,
+      const Mapping<dim>              &mapping,
+      const AffineConstraints<double> &constraints,
+      const MaterialLibrary           &materials,
+      const bool                       mean_dilatation)
+      : d(std::make_unique<Data>())
+  {
+    const auto &fe     = mf.get_dof_handler().get_fe();
+    d->degree          = fe.degree;
+    d->mean_dilatation = mean_dilatation;
+    d->n_q             = power(d->degree + 1, dim); // nodes = Gauss points
+    d->set_up_shapes();
+    for (const auto id : materials.material_ids())
+      d->n_directions_max = std::max(
+          d->n_directions_max,
+          materials.get(id).isochoric_model().n_structural_directions());
+
     const auto lexicographic =
         FETools::hierarchic_to_lexicographic_numbering<dim>(d->degree);
-    const auto        &partitioner = *mf.get_vector_partitioner();
-    const QGauss<dim>  quadrature(d->degree + 1);
-    FEValues<dim>      fe_values(mapping,
+    FEValues<dim>              fe_values(mapping,
                             fe,
-                            quadrature,
+                            QGauss<dim>(d->degree + 1),
                             update_inverse_jacobians | update_JxW_values |
                                 update_quadrature_points);
-    const unsigned int n_dir_entries = 3 * d->n_directions_max;
-    for (const auto &[id, cells] : cells_of)
-    {
-      const Material &material = materials.get(id);
+    const typename Data::SetUp setup{
+        mf, fe_values, lexicographic, *mf.get_vector_partitioner()};
+    for (const auto &[id, cells] : d->classify_cells(mf, constraints))
       for (unsigned int first = 0; first < cells.size(); first += lanes)
-      {
-        const unsigned int n_cells =
-            std::min<unsigned int>(lanes, cells.size() - first);
-        d->batches.push_back({&material, n_cells});
-        const std::size_t dof_offset = d->dof_indices.size();
-        const std::size_t map_offset = d->mapping.size();
-        const std::size_t dir_offset = d->directions.size();
-        d->dof_indices.resize(dof_offset + dim * n_nodes * lanes);
-        d->mapping.resize(map_offset + d->n_q * Data::mapping_entries * lanes);
-        d->directions.resize(dir_offset + d->n_q * n_dir_entries * lanes);
-        for (unsigned int lane = 0; lane < lanes; ++lane)
-        {
-          // padding lanes repeat the first cell with JxW = 0
-          const bool padding = lane >= n_cells;
-          const auto cell =
-              mf.get_cell_iterator(cells[first + (padding ? 0 : lane)], 0);
-          cell->get_dof_indices(indices);
-          for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
-          {
-            const auto [component, base] = fe.system_to_component_index(i);
-            d->dof_indices[dof_offset +
-                           (component * n_nodes + lexicographic[base]) * lanes +
-                           lane] = partitioner.global_to_local(indices[i]);
-          }
-          fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
-          for (unsigned int q = 0; q < d->n_q; ++q)
-          {
-            double *m =
-                &d->mapping[map_offset + q * Data::mapping_entries * lanes];
-            const auto &inverse = fe_values.inverse_jacobian(q);
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                m[(i * dim + j) * lanes + lane] =
-                    padding ? double(i == j) : inverse[i][j];
-            m[dim * dim * lanes + lane] = padding ? 0.0 : fe_values.JxW(q);
-            if (n_dir_entries == 0)
-              continue;
-            const StructuralDirections s = material.structural_directions(
-                PlaneStrain::to_3d(fe_values.quadrature_point(q)));
-            for (unsigned int a = 0; a < s.n_directions; ++a)
-              for (unsigned int k = 0; k < 3; ++k)
-                d->directions[dir_offset +
-                              (q * n_dir_entries + 3 * a + k) * lanes + lane] =
-                    s.direction[a][k];
-          }
-        }
-      }
-    }
+        d->add_batch(setup, materials.get(id), cells, first);
   }
 
   template <int dim>
@@ -309,40 +400,55 @@ namespace softgrasp
                                                      V                 &energy,
                                                      V &min_J) const
   {
-    constexpr unsigned int nn    = power(n, dim); // nodes = Gauss points
-    const Shape1D<n>      &shape = [this]() -> const Shape1D<n> &
-    {
-      if constexpr (n == 2)
-        return shape1;
-      else
-        return shape2;
-    }();
-    const Batch        &batch = batches[b];
-    const unsigned int *index = &dof_indices[std::size_t(b) * dim * nn * lanes];
-    const double *map = &mapping[std::size_t(b) * nn * mapping_entries * lanes];
-    const unsigned int n_dir = 3 * n_directions_max;
-    const auto         active =
-        V([](const auto i) { return double(i); }) < double(batch.n_cells);
+    Gradients<n>    grad;
+    Deformations<n> F;
+    V               volume = 0.0, dilated = 0.0;
+    gradients<n>(b, src, grad);
+    deformation<n>(b, grad, F, volume, dilated, min_J);
+    const V pressure = mean_dilatation
+                           ? cell_pressure(batches[b], volume, dilated, energy)
+                           : V(0.0);
+    stresses<n>(b, F, pressure, grad, energy); // grad now holds t
+    scatter_forces<n>(b, grad, dst);
+  }
 
-    // Gradients at the Gauss points, reference coordinates: grad[c][k][q].
-    V grad[dim][dim][nn];
+  template <int dim>
+  template <int n>
+  void VectorizedForceKernel<dim>::Data::gradients(const unsigned int b,
+                                                   const double      *src,
+                                                   Gradients<n> &grad) const
+  {
+    constexpr unsigned int nn = power(n, dim);
+    const unsigned int *index = &dof_indices[std::size_t(b) * dim * nn * lanes];
     for (unsigned int c = 0; c < dim; ++c)
     {
-      V u[nn];
+      Values<n> u;
       for (unsigned int i = 0; i < nn; ++i)
       {
         const unsigned int *idx = index + (c * nn + i) * lanes;
         u[i] = V([&](const auto lane) { return src[idx[lane]]; });
       }
-      evaluate_gradients<dim, n>(shape, u, grad[c]);
+      evaluate_gradients<dim, n>(shape<n>(), u, grad[c]);
     }
+  }
 
-    // F = I + grad u (plane strain: F_33 = 1); inverted points get F = I.
-    V F[nn][9];
-    V volume = 0.0, dilated = 0.0;
+  template <int dim>
+  template <int n>
+  void VectorizedForceKernel<dim>::Data::deformation(const unsigned int  b,
+                                                     const Gradients<n> &grad,
+                                                     Deformations<n>    &F,
+                                                     V                  &volume,
+                                                     V &dilated,
+                                                     V &min_J) const
+  {
+    constexpr unsigned int nn = power(n, dim);
+    const double *map = &mapping[std::size_t(b) * nn * mapping_entries * lanes];
+    const auto    active =
+        V([](const auto i) { return double(i); }) < double(batches[b].n_cells);
     for (unsigned int q = 0; q < nn; ++q)
     {
       const double *m = map + q * mapping_entries * lanes;
+      // F = I + grad u (plane strain: F_33 = 1)
       for (unsigned int i = 0; i < 9; ++i)
         F[q][i] = (i % 4 == 0) ? 1.0 : 0.0;
       for (unsigned int c = 0; c < dim; ++c)
@@ -371,27 +477,42 @@ namespace softgrasp
       volume += JxW;
       dilated += J * JxW;
     }
+  }
 
-    // Mean dilatation: J_e = v_e / V_e and p = U'(J_e) per cell.
-    V pressure = 0.0;
-    if (mean_dilatation)
+  template <int dim>
+  V VectorizedForceKernel<dim>::Data::cell_pressure(const Batch &batch,
+                                                    const V     &volume,
+                                                    const V     &dilated,
+                                                    V           &energy) const
+  {
+    V                       pressure = 0.0;
+    const VolumetricEnergy &U        = batch.material->volumetric_energy();
+    for (unsigned int lane = 0; lane < batch.n_cells; ++lane)
     {
-      const VolumetricEnergy &U = batch.material->volumetric_energy();
-      for (unsigned int lane = 0; lane < batch.n_cells; ++lane)
-      {
-        const double J_e = volume[lane] > 0 ? dilated[lane] / volume[lane] : 1;
-        pressure[lane]   = U.first_derivative(J_e);
-        energy[lane] += volume[lane] * U.energy(J_e);
-      }
+      const double J_e = volume[lane] > 0 ? dilated[lane] / volume[lane] : 1;
+      pressure[lane]   = U.first_derivative(J_e);
+      energy[lane] += volume[lane] * U.energy(J_e);
     }
+    return pressure;
+  }
 
-    // Stress in blocks of points; t[c][k][q] = JxW sum_j P_cj dxi_k/dx_j.
+  template <int dim>
+  template <int n>
+  void VectorizedForceKernel<dim>::Data::stresses(const unsigned int     b,
+                                                  const Deformations<n> &F,
+                                                  const V      &pressure,
+                                                  Gradients<n> &t,
+                                                  V            &energy) const
+  {
+    constexpr unsigned int nn          = power(n, dim);
     constexpr unsigned int q_per_block = point_block_size / lanes;
-    MaterialPointBlock     block;
+    const Batch           &batch       = batches[b];
+    const double *map = &mapping[std::size_t(b) * nn * mapping_entries * lanes];
+    const unsigned int n_dir = 3 * n_directions_max;
+    MaterialPointBlock block;
     block.given_pressure = mean_dilatation;
     block.isochoric.n_directions =
         batch.material->isochoric_model().n_structural_directions();
-    V t[dim][dim][nn];
     for (unsigned int q0 = 0; q0 < nn; q0 += q_per_block)
     {
       const unsigned int n_block = std::min(q_per_block, nn - q0);
@@ -416,30 +537,34 @@ namespace softgrasp
         const V            JxW = simd::load(m + dim * dim * lanes);
         energy += simd::load(&block.energy[qq * lanes]) * JxW;
         for (unsigned int c = 0; c < dim; ++c)
-        {
-          V P[dim];
-          for (unsigned int j = 0; j < dim; ++j)
-            P[j] = simd::load(&block.P[3 * c + j][qq * lanes]);
           for (unsigned int k = 0; k < dim; ++k)
           {
             V T = 0.0;
             for (unsigned int j = 0; j < dim; ++j)
-              T += P[j] * simd::load(m + (k * dim + j) * lanes);
+              T += simd::load(&block.P[3 * c + j][qq * lanes]) *
+                   simd::load(m + (k * dim + j) * lanes);
             t[c][k][q] = T * JxW;
           }
-        }
       }
     }
+  }
 
-    // Forces at the nodes, added into dst lane by lane.
+  template <int dim>
+  template <int n>
+  void VectorizedForceKernel<dim>::Data::scatter_forces(const unsigned int b,
+                                                        Gradients<n>      &t,
+                                                        double *dst) const
+  {
+    constexpr unsigned int nn = power(n, dim);
+    const unsigned int *index = &dof_indices[std::size_t(b) * dim * nn * lanes];
     for (unsigned int c = 0; c < dim; ++c)
     {
-      V f[nn];
-      integrate_gradients<dim, n>(shape, t[c], f);
+      Values<n> f;
+      integrate_gradients<dim, n>(shape<n>(), t[c], f);
       for (unsigned int i = 0; i < nn; ++i)
       {
         const unsigned int *idx = index + (c * nn + i) * lanes;
-        for (unsigned int lane = 0; lane < batch.n_cells; ++lane)
+        for (unsigned int lane = 0; lane < batches[b].n_cells; ++lane)
           dst[idx[lane]] += f[i][lane];
       }
     }
