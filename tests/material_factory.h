@@ -26,6 +26,22 @@ namespace softgrasp_tests
     return dealii::Tensor<2, 3>(U);
   }
 
+  /// A random deformation gradient F = I + H, the entries of H drawn from
+  /// @p u with @p random, redrawn until det F >= 0.5.
+  template <typename Random, typename Distribution>
+  dealii::Tensor<2, 3> random_deformation(Random &random, Distribution &u)
+  {
+    dealii::Tensor<2, 3> f;
+    do
+    {
+      f = dealii::unit_symmetric_tensor<3>();
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          f[i][j] += u(random);
+    } while (determinant(f) < 0.5);
+    return f;
+  }
+
   inline std::shared_ptr<const softgrasp::Material>
   material_from_prm(const std::string &fragment)
   {

@@ -33,16 +33,9 @@ namespace
     std::vector<double>               pressures(n);
     for (unsigned int k = 0; k < n; ++k)
     {
-      Tensor<2, 3> f;
-      do
-      {
-        f = dealii::unit_symmetric_tensor<3>();
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            f[i][j] += u(random);
-      } while (determinant(f) < 0.5);
-      Fs[k]         = f;
-      directions[k] = material.structural_directions(
+      const Tensor<2, 3> f = softgrasp_tests::random_deformation(random, u);
+      Fs[k]                = f;
+      directions[k]        = material.structural_directions(
           dealii::Point<3>(u(random), u(random), u(random)));
       pressures[k] = 4e4 * u(random);
       for (unsigned int i = 0; i < 3; ++i)

@@ -40,13 +40,7 @@ main()
         {
           Tensor<2, 3> f = dealii::unit_symmetric_tensor<3>();
           if (lane < n_lanes)
-            do
-            {
-              f = dealii::unit_symmetric_tensor<3>();
-              for (unsigned int i = 0; i < 3; ++i)
-                for (unsigned int j = 0; j < 3; ++j)
-                  f[i][j] += u(random);
-            } while (determinant(f) < 0.5);
+            f = softgrasp_tests::random_deformation(random, u);
           Fs[lane]         = f;
           directions[lane] = material->structural_directions(
               dealii::Point<3>(u(random), u(random), u(random)));

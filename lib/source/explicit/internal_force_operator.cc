@@ -228,11 +228,20 @@ namespace softgrasp
       VectorType                      &f,
       const std::vector<unsigned int> &cells) const
   {
-    for (const unsigned int cell : cells)
+    // contiguous runs of cell batches in one call each
+    for (std::size_t i = 0; i < cells.size();)
+    {
+      std::size_t end = i + 1;
+      while (end < cells.size() && cells[end] == cells[end - 1] + 1)
+        ++end;
+      const std::pair<unsigned int, unsigned int> range(cells[i],
+                                                        cells[end - 1] + 1);
       if (degree == 1)
-        local_apply<1>(data, f, u, {cell, cell + 1});
+        local_apply<1>(data, f, u, range);
       else
-        local_apply<2>(data, f, u, {cell, cell + 1});
+        local_apply<2>(data, f, u, range);
+      i = end;
+    }
   }
 
   template class InternalForceOperator<2>;

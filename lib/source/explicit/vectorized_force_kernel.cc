@@ -208,6 +208,21 @@ namespace softgrasp
     void
     scatter_forces(const unsigned int b, Gradients<n> &t, double *dst) const;
 
+    /// The DoF indices and the mapping data of batch @p b.
+    const unsigned int *dofs_of(const unsigned int b) const
+    {
+      return &dof_indices[std::size_t(b) * dim * n_q * lanes];
+    }
+    const double *mapping_of(const unsigned int b) const
+    {
+      return &mapping[std::size_t(b) * n_q * mapping_entries * lanes];
+    }
+    /// The structural directions of batch @p b (anisotropic materials).
+    const double *directions_of(const unsigned int b) const
+    {
+      return &directions[std::size_t(b) * n_q * 3 * n_directions_max * lanes];
+    }
+
     /// The 1D shape data of degree n - 1.
     template <int n> const Shape1D<n> &shape() const
     {
@@ -418,8 +433,8 @@ namespace softgrasp
                                                    const double      *src,
                                                    Gradients<n> &grad) const
   {
-    constexpr unsigned int nn = power(n, dim);
-    const unsigned int *index = &dof_indices[std::size_t(b) * dim * nn * lanes];
+    constexpr unsigned int nn    = power(n, dim);
+    const unsigned int    *index = dofs_of(b);
     for (unsigned int c = 0; c < dim; ++c)
     {
       Values<n> u;
@@ -441,9 +456,9 @@ namespace softgrasp
                                                      V &dilated,
                                                      V &min_J) const
   {
-    constexpr unsigned int nn = power(n, dim);
-    const double *map = &mapping[std::size_t(b) * nn * mapping_entries * lanes];
-    const auto    active =
+    constexpr unsigned int nn  = power(n, dim);
+    const double          *map = mapping_of(b);
+    const auto             active =
         V([](const auto i) { return double(i); }) < double(batches[b].n_cells);
     for (unsigned int q = 0; q < nn; ++q)
     {
@@ -507,9 +522,9 @@ namespace softgrasp
     constexpr unsigned int nn          = power(n, dim);
     constexpr unsigned int q_per_block = point_block_size / lanes;
     const Batch           &batch       = batches[b];
-    const double *map = &mapping[std::size_t(b) * nn * mapping_entries * lanes];
-    const unsigned int n_dir = 3 * n_directions_max;
-    MaterialPointBlock block;
+    const double          *map         = mapping_of(b);
+    const unsigned int     n_dir       = 3 * n_directions_max;
+    MaterialPointBlock     block;
     block.given_pressure = mean_dilatation;
     block.isochoric.n_directions =
         batch.material->isochoric_model().n_structural_directions();
@@ -523,11 +538,9 @@ namespace softgrasp
           simd::store(F[q0 + qq][i], &block.F[i][qq * lanes]);
         simd::store(pressure, &block.pressure[qq * lanes]);
         for (unsigned int e = 0; e < 3 * block.isochoric.n_directions; ++e)
-          std::copy_n(
-              &directions[((std::size_t(b) * nn + q0 + qq) * n_dir + e) *
-                          lanes],
-              lanes,
-              &block.isochoric.directions[e][qq * lanes]);
+          std::copy_n(directions_of(b) + ((q0 + qq) * n_dir + e) * lanes,
+                      lanes,
+                      &block.isochoric.directions[e][qq * lanes]);
       }
       batch.material->first_piola_block(block);
       for (unsigned int qq = 0; qq < n_block; ++qq)
@@ -555,8 +568,8 @@ namespace softgrasp
                                                         Gradients<n>      &t,
                                                         double *dst) const
   {
-    constexpr unsigned int nn = power(n, dim);
-    const unsigned int *index = &dof_indices[std::size_t(b) * dim * nn * lanes];
+    constexpr unsigned int nn    = power(n, dim);
+    const unsigned int    *index = dofs_of(b);
     for (unsigned int c = 0; c < dim; ++c)
     {
       Values<n> f;

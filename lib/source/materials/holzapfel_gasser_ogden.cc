@@ -91,10 +91,9 @@ namespace softgrasp
       fibre_response(E, energy, slope);
       response.energy += energy;
       response.first_derivative += slope * D;
-      if (with_second) // d(slope)/dE = k1 e (1 + 2 k2 E^2)
-        response.second_derivative += k1 * std::exp(k2 * E * E) *
-                                      (1.0 + 2.0 * k2 * E * E) *
-                                      outer_product(D, D);
+      if (with_second) // d(slope)/dE = k1 e (1 + 2 k2 E^2), k1 e = slope/E
+        response.second_derivative +=
+            (slope / E) * (1.0 + 2.0 * k2 * E * E) * outer_product(D, D);
     }
   }
 
