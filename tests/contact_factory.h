@@ -24,7 +24,7 @@ namespace softgrasp_tests
   inline std::string block(const std::string &lower,
                            const std::string &upper,
                            const std::string &subdivisions,
-                           const std::string &grading    = "1, 1, 1",
+                           const std::string &grading    = "1",
                            const double       distortion = 0)
   {
     std::ostringstream s;

@@ -35,6 +35,8 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <softgrasp/base/atomic_file.h>
+#include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/gnuplot.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/materials/homogeneous_loading.h>
@@ -71,8 +73,11 @@ struct Parameters
                       "1.6",
                       Patterns::Double(0.05),
                       "Largest stretch of each curve. Unit: 1.");
-    prm.declare_entry(
-        "Number of points", "19", Patterns::Integer(2), "Points per curve.");
+    prm.declare_entry("Number of points",
+                      "19",
+                      Patterns::Integer(2, 100000),
+                      "Points per curve (at most 1e5: a plot cannot show "
+                      "more). Unit: 1.");
     prm.declare_entry("Presets",
                       "all",
                       Patterns::Anything(),
@@ -176,8 +181,9 @@ plot_curves(const std::vector<std::shared_ptr<const Material>> &materials,
      << "set ylabel 'nominal stress P / mu_0'\nset yrange [-20:60]\n";
   for (const std::string mode : {"uniaxial", "equibiaxial"})
   {
-    gp << "set terminal png size 1000,700\nset output '" << mode
-       << ".png'\nset title '" << mode << " stress of the tissue presets'\n"
+    gp << "set terminal png size 1000,700\nset output '"
+       << softgrasp::AtomicFile::temporary_name(mode + ".png")
+       << "'\nset title '" << mode << " stress of the tissue presets'\n"
        << "plot ";
     for (unsigned int m = 0; m < materials.size(); ++m)
       gp << (m ? ", " : "") << "'" << mode << ".dat' index " << m
@@ -186,7 +192,10 @@ plot_curves(const std::vector<std::shared_ptr<const Material>> &materials,
     gp << "\n";
   }
   gp.close();
-  if (softgrasp::run_gnuplot(dir.string(), "tissue_curves.gnuplot", std::cout))
+  if (softgrasp::run_gnuplot(dir.string(),
+                             "tissue_curves.gnuplot",
+                             {"uniaxial.png", "equibiaxial.png"},
+                             std::cout))
     std::cout << "Plots: " << (dir / "uniaxial.png").string() << ", "
               << (dir / "equibiaxial.png").string() << "\n";
 }
@@ -239,7 +248,7 @@ main(int argc, char **argv)
   }
   catch (const std::exception &e)
   {
-    std::cerr << "Error: " << e.what() << std::endl;
+    std::cerr << "Error: " << softgrasp::error_message(e) << std::endl;
     return 1;
   }
   return 0;

@@ -5,69 +5,21 @@
 //    the sample times (capsules stay analytic capsules), and the
 //    equilibrium contact normals become the reference normals;
 //  - a missing file, a file that is not HDF5, a wrong schema version, a
-//    missing dataset, NaN, a wrong shape and non-increasing time give
+//    missing dataset, NaN, a wrong shape, non-increasing time and a phase
+//    beyond the recorded samples give
 //    errors that name the dataset and the fix.
 #include "../tests.h"
+#include "kinematics_example.h"
 
 #include <hdf5.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/io/kinematics_file.h>
 
 using namespace softgrasp;
+using softgrasp_tests::example_kinematics;
 
 namespace
 {
-  KinematicsData example()
-  {
-    KinematicsData data;
-    data.source = "test";
-    data.time   = {0, 0.5, 1.25};
-    for (const std::string name : {"thumb_proximal", "finger_distal"})
-    {
-      KinematicsData::Body body;
-      body.name = name;
-      for (unsigned int i = 0; i < data.time.size(); ++i)
-      {
-        Pose pose;
-        pose.position    = Eigen::Vector3d(0.01 * i, -0.02, 0.1 + 0.003 * i);
-        pose.orientation = Eigen::Quaterniond(
-            Eigen::AngleAxisd(0.3 * i, Eigen::Vector3d(0, 1, 1).normalized()));
-        body.poses.push_back(pose);
-      }
-      KinematicsData::Geom geom;
-      geom.name                   = name + "_capsule";
-      geom.type                   = "capsule";
-      geom.size                   = Eigen::Vector3d(0.008, 0.02, 0);
-      geom.local_pose.position    = Eigen::Vector3d(0, 0, 0.02);
-      geom.local_pose.orientation = Eigen::Quaterniond(
-          Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
-      body.geoms.push_back(geom);
-      data.bodies.push_back(body);
-    }
-    KinematicsData::Body world; // a body without geoms (left out of contact)
-    world.name  = "hand_base";
-    world.poses = data.bodies[0].poses;
-    data.bodies.push_back(world);
-    data.joints.push_back({"thumb_hinge", {0, 0.1, 0.2}, {0.05, 0.15, 0.3}});
-    data.equilibrium_time = 0.5;
-    data.equilibrium_forces.push_back({"thumb_proximal",
-                                       "thumb_proximal_capsule",
-                                       {1.5, -2, 10},
-                                       {0, 0.6, 0.8}});
-    KinematicsData::LinkHistory history;
-    history.body = "thumb_proximal";
-    history.geom = "thumb_proximal_capsule";
-    for (unsigned int i = 0; i < data.time.size(); ++i)
-    {
-      history.force.emplace_back(0.5 * i, -1, 3 * i);
-      history.normal_force.emplace_back(0, -0.6 * i, 2.5 * i);
-    }
-    data.link_forces.push_back(history);
-    data.phases.push_back({"closing", 0, 0.5, 0});
-    data.phases.push_back({"indentation", 0.5, 1.25, 0.2});
-    return data;
-  }
-
   std::string error_of(const std::string &file)
   {
     try
@@ -104,7 +56,7 @@ int
 main()
 {
   softgrasp_tests::initlog();
-  const KinematicsData written = example();
+  const KinematicsData written = example_kinematics();
   write_kinematics_file(written, "kinematics.h5");
   const KinematicsData read = read_kinematics_file("kinematics.h5");
 
@@ -214,6 +166,14 @@ main()
       variant("time.h5",
               [](const std::string &f) {
                 tamper(f, "/time", {0, 0.5, 0.5});
+              }),
+      variant("phase.h5",
+              [](const std::string &f)
+              {
+                // the indentation phase ends after the last sample (1.25 s)
+                KinematicsData data       = example_kinematics();
+                data.phases[1].end_time = 2.0;
+                write_kinematics_file(data, f);
               }),
       variant("history.h5",
               [](const std::string &f)

@@ -132,7 +132,7 @@ main(int argc, char **argv)
                 "subsection Checkpoint\n set Resume = true\nend\n",
                 0.1,
                 "out-empty"),
-      {"no checkpoint", "Resume = false"});
+      {"no usable checkpoint", "Resume = false"});
 
   // 60 % compression in one step does not converge in 3 Newton iterations;
   // halving the step does.

@@ -1,6 +1,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
+#include <filesystem>
 #include <fstream>
+#include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_reader.h>
 #include <sstream>
@@ -8,6 +10,119 @@
 namespace softgrasp
 {
   using namespace dealii;
+
+  namespace
+  {
+    struct Line
+    {
+      unsigned int number;
+      std::size_t  indent;
+      std::string  text; ///< trimmed, without comment
+    };
+
+    /// The logical lines of a .prm text (comments removed, continuation
+    /// lines joined); an InputError at the first line with binary data.
+    std::vector<Line> logical_lines(const std::string &text,
+                                    const std::string &source)
+    {
+      std::vector<Line>  lines;
+      std::istringstream in(text);
+      std::string        raw, pending;
+      unsigned int       number = 0, first = 0;
+      while (std::getline(in, raw))
+      {
+        ++number;
+        for (std::size_t c = 0; c < raw.size(); ++c)
+        {
+          const auto byte = static_cast<unsigned char>(raw[c]);
+          if (byte < 32 && raw[c] != '\t' && raw[c] != '\r')
+            throw InputError(
+                "The parameter file '" + source + "' has binary data on " +
+                "line " + std::to_string(number) + " (byte " +
+                std::to_string(byte) + " at column " + std::to_string(c + 1) +
+                "). Fix: a .prm file is plain text; check that the right "
+                "file is given and that it is not damaged.");
+        }
+        const auto hash = raw.find('#');
+        if (hash != std::string::npos)
+          raw.erase(hash);
+        if (pending.empty())
+          first = number;
+        std::string trimmed = Utilities::trim(raw);
+        if (!trimmed.empty() && trimmed.back() == '\\')
+        {
+          trimmed.pop_back();
+          pending += trimmed + " ";
+          continue;
+        }
+        const std::size_t indent =
+            pending.empty() ? raw.find_first_not_of(" \t") : 0;
+        const std::string joined = Utilities::trim(pending + trimmed);
+        pending.clear();
+        if (!joined.empty())
+          lines.push_back({first, indent, joined});
+      }
+      return lines;
+    }
+
+    /// Check the nesting of subsection/end and the form of set lines, so
+    /// that a structural error names its own line.
+    void check_structure(const std::string &text, const std::string &source)
+    {
+      const auto lines = logical_lines(text, source);
+      const auto fail  = [&](const unsigned int line, const std::string &what)
+      {
+        throw InputError("The parameter file '" + source + "' cannot be " +
+                         "read: line " + std::to_string(line) + ": " + what);
+      };
+      std::vector<std::size_t> open; // indices into lines
+      for (std::size_t i = 0; i < lines.size(); ++i)
+      {
+        const std::string &t       = lines[i].text;
+        const std::string  keyword = t.substr(0, t.find_first_of(" \t"));
+        if (keyword == "subsection")
+          open.push_back(i);
+        else if (keyword == "end")
+        {
+          if (t != "end")
+            fail(lines[i].number,
+                 "'" + t + "': 'end' stands alone on its line.");
+          if (open.empty())
+            fail(lines[i].number,
+                 "'end' without a matching 'subsection'. Fix: remove it, or "
+                 "add the 'subsection' it closes.");
+          open.pop_back();
+        }
+        else if (keyword == "set")
+        {
+          if (t.find('=') == std::string::npos)
+            fail(lines[i].number,
+                 "'" + t + "' has no '='. Fix: write 'set <name> = <value>'.");
+        }
+        else if (keyword != "include")
+          fail(lines[i].number,
+               "'" + t +
+                   "' is not a 'set', 'subsection' or 'end' line. Fix: "
+                   "write 'set <name> = <value>', or comment it out with '#'.");
+      }
+      if (open.empty())
+        return;
+      // The first unclosed subsection; where its 'end' was probably meant
+      // to be: before the next line indented no deeper than it.
+      const Line &unclosed = lines[open.front()];
+      std::string hint;
+      for (std::size_t i = open.front() + 1; i < lines.size(); ++i)
+        if (lines[i].indent <= unclosed.indent)
+        {
+          hint =
+              " (probably before line " + std::to_string(lines[i].number) + ")";
+          break;
+        }
+      fail(unclosed.number,
+           "'" + unclosed.text + "' is never closed. Fix: add its 'end'" +
+               hint + ".");
+    }
+  } // namespace
 
   void ParameterReader::add_pass(Pass pass)
   {
@@ -17,6 +132,10 @@ namespace softgrasp
   std::string ParameterReader::file_text(const std::string &filename)
   {
     std::ifstream file(filename);
+    if (std::filesystem::is_directory(filename))
+      throw InputError("The parameter file '" + filename +
+                       "' is a directory. Fix: give the path of a .prm "
+                       "file.");
     if (!file)
       throw InputError("Cannot open the parameter file '" + filename +
                        "'. Fix: check the path; it is read relative to the "
@@ -36,6 +155,7 @@ namespace softgrasp
                                     const std::string &text,
                                     const std::string &source) const
   {
+    check_structure(text, source);
     try
     {
       for (const Pass &pass : passes)
@@ -55,11 +175,41 @@ namespace softgrasp
       for (auto pos = message.find(placeholder); pos != std::string::npos;
            pos      = message.find(placeholder, pos + source.size() + 2))
         message.replace(pos, placeholder.size(), "<" + source + ">");
-      throw InputError("The parameter file '" + source +
-                       "' cannot be read: " + Utilities::trim(message) +
+      throw InputError("The parameter file '" + source + "' cannot be read: " +
+                       printable(Utilities::trim(message)) +
                        " Fix: check the spelling and the allowed values; "
                        "the programs list every parameter with its "
                        "documentation (see doc/parameters/).");
     }
+  }
+
+  std::vector<std::pair<std::string, std::string>>
+  ParameterReader::flatten(const ParameterHandler &prm)
+  {
+    std::ostringstream printed;
+    prm.print_parameters(printed, ParameterHandler::ShortPRM);
+    std::vector<std::pair<std::string, std::string>> entries;
+    std::vector<std::string>                         path;
+    std::istringstream                               lines(printed.str());
+    for (std::string line; std::getline(lines, line);)
+    {
+      line = Utilities::trim(line);
+      if (line.rfind("subsection ", 0) == 0)
+        path.push_back(Utilities::trim(line.substr(11)));
+      else if (line == "end" && !path.empty())
+        path.pop_back();
+      else if (line.rfind("set ", 0) == 0)
+      {
+        const auto  equal = line.find('=');
+        std::string name  = Utilities::trim(line.substr(4, equal - 4));
+        for (auto it = path.rbegin(); it != path.rend(); ++it)
+          name = *it + "/" + name;
+        entries.emplace_back(name,
+                             equal == std::string::npos
+                                 ? ""
+                                 : Utilities::trim(line.substr(equal + 1)));
+      }
+    }
+    return entries;
   }
 } // namespace softgrasp

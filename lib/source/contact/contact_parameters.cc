@@ -1,4 +1,5 @@
 #include <deal.II/base/utilities.h>
+#include <softgrasp/base/input_error.h>
 #include <softgrasp/contact/contact_parameters.h>
 
 namespace softgrasp
@@ -18,7 +19,7 @@ namespace softgrasp
                       "0",
                       Patterns::Double(0),
                       "Coulomb friction coefficient mu between the rigid "
-                      "bodies and the tissue. Unit: 1. Range: [0, inf); 0 is "
+                      "bodies and the tissue. Unit: 1. Range: [0, 3]; 0 is "
                       "frictionless.");
     prm.declare_entry("Complementarity parameter",
                       "0.1",
@@ -42,7 +43,13 @@ namespace softgrasp
          Utilities::split_string_list(prm.get("Slave boundary ids"), ','))
       slave_boundary_ids.push_back(
           static_cast<types::boundary_id>(Utilities::string_to_int(item)));
-    friction_coefficient   = prm.get_double("Friction coefficient");
+    friction_coefficient = prm.get_double("Friction coefficient");
+    if (friction_coefficient > 3)
+      throw InputError(
+          "Parameter 'Contact/Friction coefficient' = " +
+          std::to_string(friction_coefficient) +
+          " is far above measured values (skin on metal or rubber: about "
+          "0.2-1.5). Fix: give a Coulomb coefficient between 0 and 3.");
     complementarity_factor = prm.get_double("Complementarity parameter");
     prm.leave_subsection();
   }

@@ -121,6 +121,30 @@ namespace softgrasp
                        "the rigid bodies.");
   }
 
+  template <int dim>
+  std::pair<unsigned int, double>
+  ContactSurface<dim>::overlap(const double                         time,
+                               const TrilinosWrappers::MPI::Vector &u)
+  {
+    set_time(time);
+    place_bodies(time, poses_now);
+    unsigned int inside  = 0;
+    double       deepest = 0;
+    for (const auto &node : node_list)
+    {
+      Eigen::Vector3d x = node.reference_position;
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] += u(node.dofs[c]);
+      const Proximity p = nearest(x);
+      if (p.body < 0 || !(p.gap < 0))
+        continue;
+      deepest = std::max(deepest, -p.gap);
+      ++inside;
+    }
+    return {Utilities::MPI::sum(inside, comm),
+            Utilities::MPI::max(deepest, comm)};
+  }
+
   template <int dim> void ContactSurface<dim>::set_time(const double time)
   {
     current_time = time;

@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
 #include <fstream>
+#include <softgrasp/base/atomic_file.h>
 #include <softgrasp/base/gnuplot.h>
 #include <softgrasp/grasp/grasp_pictures.h>
 #include <softgrasp/postprocess/principal_strains.h>
@@ -187,7 +188,8 @@ namespace softgrasp
     {
       std::ofstream gp(directory + "/" + base + "_picture.gnuplot");
       gp << "set terminal pngcairo size 1100,900 noenhanced\n"
-         << "set output '" << base << "_picture.png'\n"
+         << "set output '" << AtomicFile::temporary_name(base + "_picture.png")
+         << "'\n"
          << "set title 'Indented body coloured by e_max (largest principal "
             "Green-Lagrange strain), finger links at t = "
          << time << " s'\n"
@@ -200,7 +202,8 @@ namespace softgrasp
          << "_surface.dat' using 1:2:3:4 with pm3d notitle, '" << base
          << "_geoms.dat' using 1:2:3 with lines lc rgb '#202020' notitle\n";
     }
-    if (run_gnuplot(directory, base + "_picture.gnuplot", log))
+    if (run_gnuplot(
+            directory, base + "_picture.gnuplot", {base + "_picture.png"}, log))
       log << "Picture: " << directory << "/" << base << "_picture.png\n";
   }
 
@@ -222,7 +225,8 @@ namespace softgrasp
     {
       std::ofstream gp(directory + "/" + base + "_forces.gnuplot");
       gp << "set terminal pngcairo size 1400,650 noenhanced\n"
-         << "set output '" << base << "_forces.png'\n"
+         << "set output '" << AtomicFile::temporary_name(base + "_forces.png")
+         << "'\n"
          << "set datafile separator ','\nset key top left font ',8'\n"
          << "set grid\nset multiplot layout 1,2 title 'Link forces against "
             "closure: finite elements (solid, points) and MuJoCo (dashed)'\n";
@@ -242,7 +246,8 @@ namespace softgrasp
       }
       gp << "unset multiplot\n";
     }
-    if (run_gnuplot(directory, base + "_forces.gnuplot", log))
+    if (run_gnuplot(
+            directory, base + "_forces.gnuplot", {base + "_forces.png"}, log))
       log << "Plot: " << directory << "/" << base << "_forces.png\n";
   }
 } // namespace softgrasp

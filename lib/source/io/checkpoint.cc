@@ -1,23 +1,123 @@
+#include <algorithm>
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
+#include <deal.II/base/mpi.h>
 #include <deal.II/distributed/solution_transfer.h>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <map>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/io/checkpoint.h>
+#include <sstream>
 
 namespace softgrasp
 {
   using namespace dealii;
   namespace fs = std::filesystem;
 
-  template <int dim>
-  Checkpoint<dim>::Checkpoint(std::string directory)
-      : directory(std::move(directory))
+  namespace
   {
+    const char *const manifest_name = "manifest.txt";
+
+    /// 64-bit FNV-1a of a file's bytes, as 16 hex digits.
+    std::string checksum(const fs::path &file)
+    {
+      std::ifstream     in(file, std::ios::binary);
+      std::uint64_t     hash = 14695981039346656037ull;
+      std::vector<char> buffer(1 << 16);
+      while (in)
+      {
+        in.read(buffer.data(), buffer.size());
+        for (std::streamsize i = 0; i < in.gcount(); ++i)
+          hash =
+              (hash ^ static_cast<unsigned char>(buffer[i])) * 1099511628211ull;
+      }
+      std::ostringstream hex;
+      hex << std::hex << std::setw(16) << std::setfill('0') << hash;
+      return hex.str();
+    }
+
+    /// What a manifest records.
+    struct Manifest
+    {
+      unsigned int                       version = 0;
+      unsigned int                       dim     = 0;
+      std::map<std::string, std::string> files; // name -> "size checksum"
+      std::vector<std::pair<std::string, std::string>> settings;
+      bool                                             complete = false;
+    };
+
+    Manifest read_manifest(const fs::path &file)
+    {
+      Manifest      m;
+      std::ifstream in(file);
+      std::string   line;
+      if (!std::getline(in, line) ||
+          line.rfind("softgrasp checkpoint ", 0) != 0)
+        return m;
+      m.version = std::atoi(line.c_str() + 21);
+      while (std::getline(in, line))
+      {
+        std::istringstream words(line);
+        std::string        key;
+        words >> key;
+        if (key == "dimension")
+          words >> m.dim;
+        else if (key == "file")
+        {
+          std::string name, size, sum;
+          words >> name >> size >> sum;
+          m.files[name] = size + " " + sum;
+        }
+        else if (key == "setting")
+        {
+          const auto equal = line.find(" = ");
+          if (equal != std::string::npos)
+            m.settings.emplace_back(line.substr(8, equal - 8),
+                                    line.substr(equal + 3));
+        }
+        else if (key == "end")
+          m.complete = true;
+      }
+      return m;
+    }
+  } // namespace
+
+  template <int dim>
+  Checkpoint<dim>::Checkpoint(std::string directory, Settings settings)
+      : directory(std::move(directory))
+      , settings(std::move(settings))
+  {
+  }
+
+  template <int dim>
+  void Checkpoint<dim>::write_manifest(const std::string &path) const
+  {
+    std::vector<std::string> names;
+    for (const auto &entry : fs::directory_iterator(path))
+      if (entry.is_regular_file() && entry.path().filename() != manifest_name)
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    std::ostringstream out;
+    out << "softgrasp checkpoint " << format_version << "\ndimension " << dim
+        << "\n";
+    for (const auto &name : names)
+      out << "file " << name << " " << fs::file_size(fs::path(path) / name)
+          << " " << checksum(fs::path(path) / name) << "\n";
+    for (const auto &[name, value] : settings)
+      out << "setting " << name << " = " << value << "\n";
+    out << "end\n";
+    std::ofstream file(fs::path(path) / manifest_name);
+    file << out.str();
+    file.close();
+    if (!file)
+      throw InputError("Cannot write the checkpoint manifest in '" + path +
+                       "'. Fix: check that the disk is not full and the "
+                       "directory is writable.");
   }
 
   template <int dim>
@@ -33,12 +133,36 @@ namespace softgrasp
     const std::string target   = directory + "/checkpoint";
     const std::string partial  = directory + "/checkpoint.new";
     const std::string previous = directory + "/checkpoint.old";
+    // p4est aborts the job on a failed write: check the free space first
+    // (twice the last checkpoint, or an estimate from the fields).
+    std::string error;
     if (root)
     {
-      fs::remove_all(partial);
-      fs::create_directories(partial);
+      std::error_code ignored;
+      std::uintmax_t  needed = 0;
+      if (fs::is_directory(target))
+        for (const auto &entry : fs::directory_iterator(target))
+          needed += entry.file_size(ignored);
+      else
+        needed = (1 + extra.size()) * 12 * system.n_dofs() +
+                 200 * tria.n_global_active_cells();
+      const auto space = fs::space(directory, ignored);
+      if (!ignored && space.available < 2 * needed + (1u << 16))
+        error = "Not enough free disk space for a checkpoint in '" + directory +
+                "' (" + std::to_string(space.available >> 20) +
+                " MiB free, about " + std::to_string((2 * needed) >> 20) +
+                " MiB needed). The previous checkpoint is kept. Fix: free "
+                "disk space, or set 'Checkpoint/Interval = 0'.";
+      else
+      {
+        fs::remove_all(partial, ignored);
+        if (!fs::create_directories(partial, ignored) && ignored)
+          error = "Cannot create '" + partial + "': " + ignored.message();
+      }
     }
-    MPI_Barrier(comm);
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw InputError(error);
 
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
         transfer(system.dof_handler());
@@ -49,51 +173,184 @@ namespace softgrasp
     // save() is const on the mesh data but not declared so.
     const_cast<parallel::distributed::Triangulation<dim> &>(tria).save(partial +
                                                                        "/mesh");
+    MPI_Barrier(comm);
 
     if (root)
     {
+      try
       {
-        std::ofstream                 out(partial + "/state.txt");
-        boost::archive::text_oarchive archive(out);
-        archive << state;
+        {
+          std::ofstream                 out(partial + "/state.txt");
+          boost::archive::text_oarchive archive(out);
+          archive << state;
+          out.flush();
+          if (!out)
+            throw InputError("Cannot write '" + partial + "/state.txt'.");
+        }
+        write_manifest(partial);
+        // Keep the last good checkpoint until the new one is in place.
+        if (fs::exists(target))
+        {
+          fs::remove_all(previous);
+          fs::rename(target, previous);
+        }
+        fs::rename(partial, target);
       }
-      fs::remove_all(previous);
-      if (fs::exists(target))
-        fs::rename(target, previous);
-      fs::rename(partial, target);
-      fs::remove_all(previous);
+      catch (const std::exception &e)
+      {
+        error = std::string("Writing the checkpoint in '") + directory +
+                "' failed: " + e.what() +
+                " The previous checkpoint is kept. Fix: check that the disk "
+                "is not full and the directory is writable.";
+      }
     }
-    MPI_Barrier(comm);
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw InputError(error);
   }
 
-  template <int dim> std::string Checkpoint<dim>::complete_directory() const
+  template <int dim>
+  std::string Checkpoint<dim>::damage(const std::string &path) const
   {
-    for (const std::string name : {"/checkpoint", "/checkpoint.old"})
-      if (fs::exists(directory + name + "/state.txt"))
-        return directory + name;
+    if (!fs::is_directory(path))
+      return "it does not exist";
+    const fs::path manifest_file = fs::path(path) / manifest_name;
+    if (!fs::exists(manifest_file))
+      return "it has no manifest (written by softgrasp before checkpoint "
+             "format " +
+             std::to_string(format_version) +
+             ", or its writing was interrupted)";
+    const Manifest m = read_manifest(manifest_file);
+    if (m.version != format_version || !m.complete)
+      return "its manifest is damaged or of another format version (" +
+             std::to_string(m.version) + ", this softgrasp reads " +
+             std::to_string(format_version) + ")";
+    if (m.dim != dim)
+      return "it was written by a " + std::to_string(m.dim) +
+             "D run, this run is " + std::to_string(dim) + "D";
+    if (m.files.count("state.txt") == 0 || m.files.count("mesh") == 0)
+      return "its manifest lists no mesh or state file";
+    for (const auto &[name, recorded] : m.files)
+    {
+      const fs::path file = fs::path(path) / name;
+      if (!fs::exists(file))
+        return "the file '" + name + "' is missing";
+      const std::string actual =
+          std::to_string(fs::file_size(file)) + " " + checksum(file);
+      if (actual != recorded)
+        return "the file '" + name + "' is damaged (its size or checksum " +
+               "differs from the manifest)";
+    }
+    try
+    {
+      RunState                      state;
+      std::ifstream                 in(fs::path(path) / "state.txt");
+      boost::archive::text_iarchive archive(in);
+      archive >> state;
+    }
+    catch (const std::exception &e)
+    {
+      return std::string("its state file cannot be read (") + e.what() + ")";
+    }
     return "";
+  }
+
+  template <int dim>
+  std::string Checkpoint<dim>::changed_settings(const std::string &path) const
+  {
+    const Manifest m = read_manifest(fs::path(path) / manifest_name);
+    std::map<std::string, std::string> saved(m.settings.begin(),
+                                             m.settings.end());
+    std::ostringstream                 differences;
+    for (const auto &[name, value] : settings)
+    {
+      const auto it = saved.find(name);
+      if (it == saved.end())
+        differences << "\n  '" << name << "' = '" << value
+                    << "' is new (not in the checkpoint)";
+      else if (it->second != value)
+        differences << "\n  '" << name << "' = '" << value
+                    << "', the checkpoint was written with '" << it->second
+                    << "'";
+      if (it != saved.end())
+        saved.erase(it);
+    }
+    for (const auto &[name, value] : saved)
+      differences << "\n  '" << name << "' = '" << value
+                  << "' in the checkpoint is not set in this run";
+    return differences.str();
+  }
+
+  template <int dim>
+  std::string Checkpoint<dim>::select(MPI_Comm comm, std::ostream &log) const
+  {
+    std::string chosen, error;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      std::string reasons;
+      for (const std::string name : {"checkpoint", "checkpoint.old"})
+      {
+        const std::string path    = directory + "/" + name;
+        const std::string problem = damage(path);
+        if (problem.empty())
+        {
+          const std::string changed = changed_settings(path);
+          if (!changed.empty())
+            error = "The run cannot resume from '" + path +
+                    "': these settings differ from the run that wrote "
+                    "it:" +
+                    changed +
+                    "\nFix: resume with the settings of that run (the "
+                    "checkpoint's manifest.txt lists them), or set "
+                    "'Checkpoint/Resume = false' to start over.";
+          else
+            chosen = path;
+          break;
+        }
+        reasons += "\n  '" + path + "': " + problem;
+      }
+      if (chosen.empty() && error.empty())
+        error = "'Checkpoint/Resume' is true but there is no usable "
+                "checkpoint in '" +
+                directory + "':" + reasons +
+                "\nFix: set 'Checkpoint/Resume = false' to start from the "
+                "beginning, or point 'Output/Directory' at the directory of "
+                "the run to continue.";
+      else if (!chosen.empty() && !reasons.empty())
+      {
+        // Keep the damaged one aside, so the next checkpoint does not
+        // replace the good one by it.
+        const std::string newest = directory + "/checkpoint";
+        std::error_code   ignored;
+        fs::remove_all(newest + ".damaged", ignored);
+        fs::rename(newest, newest + ".damaged", ignored);
+        log << "Warning: the newest checkpoint cannot be used:" << reasons
+            << "\nResuming from the previous one, '" << chosen
+            << "' (the damaged one is kept as 'checkpoint.damaged')."
+            << std::endl;
+      }
+    }
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw InputError(error);
+    return Utilities::MPI::broadcast(comm, chosen, 0);
   }
 
   template <int dim> bool Checkpoint<dim>::exists() const
   {
-    return !complete_directory().empty();
+    return fs::exists(directory + "/checkpoint") ||
+           fs::exists(directory + "/checkpoint.old");
   }
 
   template <int dim>
   RunState
   Checkpoint<dim>::load(parallel::distributed::Triangulation<dim>  &tria,
                         SolidSystem<dim>                           &system,
-                        std::vector<TrilinosWrappers::MPI::Vector> &extra) const
+                        std::vector<TrilinosWrappers::MPI::Vector> &extra,
+                        std::ostream                               &log) const
   {
-    const std::string source = complete_directory();
-    if (source.empty())
-      throw InputError("'Checkpoint/Resume' is true but there is no "
-                       "checkpoint in '" +
-                       directory +
-                       "'. Fix: set 'Resume = false' to start from the "
-                       "beginning, or point 'Output/Directory' at the "
-                       "directory of the run to continue.");
-    RunState state;
+    const std::string source = select(system.communicator(), log);
+    RunState          state;
     {
       std::ifstream                 in(source + "/state.txt");
       boost::archive::text_iarchive archive(in);

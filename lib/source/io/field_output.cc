@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <deal.II/numerics/data_out.h>
 #include <iomanip>
 #include <softgrasp/base/atomic_file.h>
@@ -98,18 +99,36 @@ namespace softgrasp
     std::ostringstream name;
     name << base_name << "_" << std::setw(5) << std::setfill('0') << index
          << ".vtu";
-    const std::string file = directory + "/" + name.str();
-    data_out.write_vtu_in_parallel(AtomicFile::temporary_name(file), comm);
+    const std::string file    = directory + "/" + name.str();
+    const std::string partial = AtomicFile::temporary_name(file);
+    data_out.write_vtu_in_parallel(partial, comm);
+    // MPI-IO reports a failed write only on stderr: check the file whole
+    // before it gets its name, on rank 0, and fail on all ranks.
+    std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
     {
-      AtomicFile::commit(AtomicFile::temporary_name(file), file);
-      records.emplace_back(time, name.str());
-      std::ostringstream pvd;
-      DataOutBase::write_pvd_record(pvd, records);
-      AtomicFile::write(directory + "/" + base_name + ".pvd", pvd.str());
+      problem = AtomicFile::check_written(partial, "</VTKFile>\n", true);
+      try
+      {
+        if (!problem.empty())
+          throw std::runtime_error(AtomicFile::write_error(file, problem));
+        AtomicFile::commit(partial, file);
+        auto with_this = records;
+        with_this.emplace_back(time, name.str());
+        std::ostringstream pvd;
+        DataOutBase::write_pvd_record(pvd, with_this);
+        AtomicFile::write(directory + "/" + base_name + ".pvd", pvd.str());
+      }
+      catch (const std::exception &e)
+      {
+        problem = e.what();
+        std::remove(partial.c_str());
+      }
     }
-    else
-      records.emplace_back(time, name.str());
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      throw std::runtime_error(problem);
+    records.emplace_back(time, name.str());
   }
 
   template class FieldOutput<2>;

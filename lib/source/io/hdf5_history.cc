@@ -1,7 +1,10 @@
+#include <cstdio>
 #include <deal.II/base/hdf5.h>
 #include <deal.II/lac/full_matrix.h>
+#include <hdf5.h>
 #include <map>
 #include <softgrasp/base/atomic_file.h>
+#include <softgrasp/base/fatal_error.h>
 #include <softgrasp/io/hdf5_history.h>
 
 namespace softgrasp
@@ -52,6 +55,7 @@ namespace softgrasp
     }
 
     const std::string temporary = AtomicFile::temporary_name(filename);
+    try
     {
       HDF5::File file(temporary, HDF5::File::FileAccessMode::create);
       file.set_attribute("schema", schema);
@@ -101,6 +105,19 @@ namespace softgrasp
           dataset.set_attribute("unit", unit_of(key.second, dim));
         }
       }
+    }
+    catch (const std::exception &e)
+    {
+      std::remove(temporary.c_str());
+      throw std::runtime_error(AtomicFile::write_error(
+          filename, "the HDF5 library failed: " + error_message(e)));
+    }
+    // Errors at closing are only printed by HDF5: check the file.
+    if (H5Fis_hdf5(temporary.c_str()) <= 0)
+    {
+      std::remove(temporary.c_str());
+      throw std::runtime_error(
+          AtomicFile::write_error(filename, "the HDF5 file is incomplete"));
     }
     AtomicFile::commit(temporary, filename);
   }

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
+#include <filesystem>
 #include <fstream>
 #include <hdf5.h>
 #include <softgrasp/base/atomic_file.h>
@@ -194,7 +195,10 @@ namespace softgrasp
           fail("has a non-string attribute '" + name + "' on '" + where + "'",
                "store it as a fixed-length string");
         std::string value(size, '\0');
-        H5Aread(attribute, type, value.data());
+        if (H5Aread(attribute, type, value.data()) < 0)
+          fail("has an unreadable attribute '" + name + "' on '" + where +
+                   "' (the file is damaged)",
+               "write it again with the rigid-body program");
         return value.substr(0, value.find('\0'));
       }
 
@@ -207,7 +211,10 @@ namespace softgrasp
                "write it as described in doc/kinematics_file.md");
         Handle attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
         double value = 0;
-        H5Aread(attribute, H5T_NATIVE_DOUBLE, &value);
+        if (H5Aread(attribute, H5T_NATIVE_DOUBLE, &value) < 0)
+          fail("has an unreadable attribute '" + name + "' on '" + where +
+                   "' (the file is damaged)",
+               "write it again with the rigid-body program");
         return value;
       }
 
@@ -235,13 +242,15 @@ namespace softgrasp
                    (columns > 1 ? " x " + std::to_string(columns) : ""),
                "write one row per time sample (doc/kinematics_file.md)");
         std::vector<double> values(dims[0] * columns);
-        if (!values.empty())
-          H5Dread(set,
-                  H5T_NATIVE_DOUBLE,
-                  H5S_ALL,
-                  H5S_ALL,
-                  H5P_DEFAULT,
-                  values.data());
+        if (!values.empty() && H5Dread(set,
+                                       H5T_NATIVE_DOUBLE,
+                                       H5S_ALL,
+                                       H5S_ALL,
+                                       H5P_DEFAULT,
+                                       values.data()) < 0)
+          fail("has an unreadable dataset '" + path +
+                   "' (the file is damaged or truncated)",
+               "write it again with the rigid-body program");
         for (std::size_t i = 0; i < values.size(); ++i)
           if (!std::isfinite(values[i]))
             fail("has a non-finite value (NaN or inf) in '" + path +
@@ -479,7 +488,7 @@ namespace softgrasp
 
   KinematicsData read_kinematics_file(const std::string &filename)
   {
-    if (!std::ifstream(filename))
+    if (!std::ifstream(filename) || std::filesystem::is_directory(filename))
       throw InputError("Cannot open the kinematics file '" + filename +
                        "'. Fix: check the path (relative to the working "
                        "directory), or run the rigid-body program that "
@@ -503,8 +512,18 @@ namespace softgrasp
     if (H5Fis_hdf5(filename.c_str()) <= 0)
       reader.fail("is not an HDF5 file",
                   "give the .h5 file written by the rigid-body program");
-    Handle file(H5Fopen(filename.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT),
+    Handle  file(H5Fopen(filename.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT),
                 H5Fclose);
+    haddr_t end_of_data = 0;
+    if (file < 0 || H5Fget_eoa(file, &end_of_data) < 0)
+      reader.fail("is damaged: HDF5 cannot open it",
+                  "write it again with the rigid-body program");
+    if (std::filesystem::file_size(filename) < end_of_data)
+      reader.fail("is truncated (" +
+                      std::to_string(std::filesystem::file_size(filename)) +
+                      " of " + std::to_string(end_of_data) + " bytes)",
+                  "write it again with the rigid-body program (was the disk "
+                  "full, or the copy interrupted?)");
     if (reader.string_attribute(file, "schema", "/") != schema_name)
       reader.fail("is not a softgrasp kinematics file (attribute 'schema')",
                   "give the file written by the rigid-body program");
@@ -618,6 +637,17 @@ namespace softgrasp
                         std::to_string(p.end_time) + " s, amount " +
                         std::to_string(p.amount),
                     "write finite values with end_time > start_time");
+      const double slack = 1e-9 * (data.time.back() - data.time.front());
+      if (p.start_time < data.time.front() - slack ||
+          p.end_time > data.time.back() + slack)
+        reader.fail("has the phase '" + path + "' from " +
+                        std::to_string(p.start_time) + " s to " +
+                        std::to_string(p.end_time) +
+                        " s, outside the recorded samples (" +
+                        std::to_string(data.time.front()) + " s to " +
+                        std::to_string(data.time.back()) + " s)",
+                    "record the whole phase, or give its times within the "
+                    "recorded samples");
       data.phases.push_back(p);
     }
     return data;

@@ -1,11 +1,13 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <cmath>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <ml_MultiLevelPreconditioner.h>
+#include <softgrasp/base/fatal_error.h>
 #include <softgrasp/mechanics/linear_solver.h>
 
 namespace softgrasp
@@ -26,6 +28,22 @@ namespace softgrasp
     null_space.reset();
   }
 
+  namespace
+  {
+    /// A solution with NaN or Inf entries is a breakdown, not a solution.
+    LinearSolver::Result
+    finite_or_breakdown(const TrilinosWrappers::MPI::Vector &x,
+                        LinearSolver::Result                 result)
+    {
+      if (result.converged && !std::isfinite(x.l2_norm()))
+      {
+        result.converged = false;
+        result.breakdown = "the linear solver returned NaN or Inf values";
+      }
+      return result;
+    }
+  } // namespace
+
   LinearSolver::Result
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
@@ -43,10 +61,21 @@ namespace softgrasp
           control,
           TrilinosWrappers::SolverDirect::AdditionalData(false,
                                                          "Amesos_Mumps"));
-      direct.solve(A, x, b);
-      result.converged  = true;
       result.iterations = 1;
-      return result;
+      try
+      {
+        direct.solve(A, x, b);
+        result.converged = true;
+      }
+      catch (const std::exception &e)
+      {
+        // A singular or otherwise failed factorisation (MUMPS reports it on
+        // every rank): the Newton step fails and the load step is cut back.
+        result.breakdown =
+            "the direct solver (MUMPS) failed: " + error_message(e);
+        return result;
+      }
+      return finite_or_breakdown(x, result);
     }
 
     // ML parameters (as deal.II's PreconditionAMG for elliptic problems),
@@ -98,8 +127,14 @@ namespace softgrasp
     {
       result.converged = false;
     }
+    catch (const std::exception &e)
+    {
+      // e.g. a breakdown of CG on an indefinite matrix
+      result.converged = false;
+      result.breakdown = "the iterative solver broke down: " + error_message(e);
+    }
     result.iterations = control.last_step();
     result.residual   = control.last_value();
-    return result;
+    return finite_or_breakdown(x, result);
   }
 } // namespace softgrasp

@@ -1,10 +1,15 @@
+#include <algorithm>
+#include <cmath>
 #include <deal.II/base/multithread_info.h>
 #include <filesystem>
+#include <set>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/explicit/explicit_solver.h>
 #include <softgrasp/io/hdf5_history.h>
 #include <softgrasp/mechanics/mechanics_solver.h>
 #include <softgrasp/mechanics/quasi_static_solver.h>
+#include <sstream>
+#include <unistd.h>
 
 namespace softgrasp
 {
@@ -48,6 +53,30 @@ namespace softgrasp
       object.parse_parameters(prm);
       return object;
     }
+
+    /// The entries a resume must not change: the dimension, the element,
+    /// the mesh, the materials, contact, rigid bodies and the integrator
+    /// (which decides the fields a checkpoint holds).
+    std::vector<std::pair<std::string, std::string>>
+    resume_settings(const ParameterHandler &prm)
+    {
+      const std::vector<std::string>                   prefixes = {"Dimension",
+                                                                   "Finite element/",
+                                                                   "Mesh/",
+                                                                   "Materials/",
+                                                                   "Contact/",
+                                                                   "Rigid bodies/",
+                                                                   "Time/Integrator"};
+      std::vector<std::pair<std::string, std::string>> kept;
+      for (const auto &entry : ParameterReader::flatten(prm))
+        for (const auto &prefix : prefixes)
+          if (entry.first.rfind(prefix, 0) == 0)
+          {
+            kept.push_back(entry);
+            break;
+          }
+      return kept;
+    }
   } // namespace
 
   template <int dim>
@@ -61,7 +90,10 @@ namespace softgrasp
       , boundary_conditions(parsed<BoundaryConditions<dim>>(prm))
       , contact_parameters(parsed<ContactParameters>(prm))
       , bodies(parsed<RigidBodySet>(prm))
-      , timers(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+      // Per-rank timers (statistics over ranks come from
+      // print_wall_time_statistics): no barrier per section, and no MPI in
+      // the destructor, which may run while an error unwinds.
+      , timers(pcout, TimerOutput::never, TimerOutput::wall_times)
       , triangulation(comm)
       , field_output(solver_parameters.output.directory,
                      solver_parameters.output.base_name)
@@ -69,7 +101,7 @@ namespace softgrasp
                        solver_parameters.output.base_name + "_history.csv")
       , contact_writer(solver_parameters.output.directory + "/" +
                        solver_parameters.output.base_name + "_contact.csv")
-      , checkpoint(solver_parameters.output.directory)
+      , checkpoint(solver_parameters.output.directory, resume_settings(prm))
   {
     verbose_out.set_condition(solver_parameters.output.verbose &&
                               Utilities::MPI::this_mpi_process(comm) == 0);
@@ -93,9 +125,14 @@ namespace softgrasp
   MechanicsSolver<dim>::prepare_run(const std::vector<std::string> &leading,
                                     const std::vector<std::string> &trailing)
   {
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      std::filesystem::create_directories(solver_parameters.output.directory);
-    MPI_Barrier(comm);
+    run_directory.reset();
+    run_directory = std::make_unique<RunDirectory>(
+        comm,
+        solver_parameters.output.directory,
+        solver_parameters.output.base_name,
+        solver_parameters.output.existing_results,
+        solver_parameters.checkpoint.resume,
+        std::cout);
     const unsigned int mapping_degree =
         mesh.has_curved_boundary() ? solver_parameters.discretization.degree
                                    : 1;
@@ -114,7 +151,8 @@ namespace softgrasp
       mesh.create_coarse_mesh(triangulation);
       if (resume)
       {
-        state = checkpoint.load(triangulation, *solid, restored_fields);
+        state =
+            checkpoint.load(triangulation, *solid, restored_fields, std::cout);
         if (restored_fields.size() != n_restored_fields)
           throw InputError(
               "The checkpoint in '" + solver_parameters.output.directory +
@@ -126,6 +164,7 @@ namespace softgrasp
       }
       else
       {
+        check_run_size();
         mesh.refine(triangulation);
         solid->setup();
       }
@@ -133,8 +172,17 @@ namespace softgrasp
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         material_library.get(cell->material_id()); // throws if unmapped
+    check_mesh_references();
 
     const bool has_surface = !contact_parameters.slave_boundary_ids.empty();
+    if (needs_tangent() && boundary_conditions.dirichlet.empty() &&
+        !has_surface)
+      throw InputError(
+          "No Dirichlet boundary and no contact: nothing holds the body, so "
+          "it is free to move as a rigid body and the quasi-static problem "
+          "has no unique solution. Fix: fix a boundary ('Boundary "
+          "conditions/Dirichlet boundary ids'), or use 'Time/Integrator = "
+          "explicit dynamic', where inertia decides the motion.");
     if (has_surface && bodies.empty())
       throw InputError("'Contact/Slave boundary ids' is set but there is no "
                        "rigid body. Fix: name the bodies in 'Rigid "
@@ -190,6 +238,108 @@ namespace softgrasp
       contact_writer.set_columns(contact_columns);
       contact_writer.rows.clear();
     }
+  }
+
+  namespace
+  {
+    /// Physical memory of the machines the ranks of @p comm run on (bytes).
+    double memory_of_machines(const MPI_Comm comm)
+    {
+      char name[MPI_MAX_PROCESSOR_NAME] = {};
+      int  length                       = 0;
+      MPI_Get_processor_name(name, &length);
+      const auto   names = Utilities::MPI::gather(comm, std::string(name), 0);
+      const double here =
+          double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+      const double machines =
+          std::set<std::string>(names.begin(), names.end()).size();
+      return Utilities::MPI::broadcast(comm, here * machines, 0);
+    }
+  } // namespace
+
+  template <int dim> void MechanicsSolver<dim>::check_run_size() const
+  {
+    const auto &limits = solver_parameters.limits;
+    if (!limits.check_size)
+      return;
+    const auto  &time  = solver_parameters.time;
+    const double steps = time.end_time / time.step_size;
+    if (steps > limits.maximum_steps)
+      throw InputError(
+          "'Time/End time' / 'Time/Time step' = " + std::to_string(steps) +
+          " steps (or recorded states) exceed 'Run limits/Maximum steps' = " +
+          std::to_string(limits.maximum_steps) +
+          ". Fix: a larger 'Time/Time step' (explicit runs take their own "
+          "stable step; 'Time step' is only the recording interval), or "
+          "raise 'Run limits/Maximum steps'.");
+    // Memory: cells after refinement x dofs per cell x bytes per dof (the
+    // sparse tangent with (2k+1)^dim coupled nodes per row, a direct
+    // factorisation about 4 times that; explicit runs hold vectors only).
+    const unsigned int k     = solver_parameters.discretization.degree;
+    const double       cells = double(triangulation.n_global_active_cells()) *
+                         std::pow(2.0, dim * mesh.global_refinements);
+    const double dofs = cells * std::pow(double(k), dim) * dim;
+    const double row  = 12.0 * dim * std::pow(2.0 * k + 1, dim);
+    const double factor =
+        !needs_tangent()
+            ? 0.05
+            : (solver_parameters.linear_solver.type == LinearSolverType::direct
+                   ? 5.0
+                   : 2.0);
+    const double bytes     = dofs * (row * factor + 400);
+    const double available = memory_of_machines(comm);
+    if (bytes > available)
+      throw InputError(
+          "The mesh after 'Mesh/Global refinements' = " +
+          std::to_string(mesh.global_refinements) + " has about " +
+          std::to_string(std::llround(cells)) + " cells and " +
+          std::to_string(std::llround(dofs)) + " unknowns, and needs about " +
+          std::to_string(std::llround(bytes / 1e9)) +
+          " GB; the machines of this job have " +
+          std::to_string(std::llround(available / 1e9)) +
+          " GB. Fix: fewer refinements, more machines, or set 'Run "
+          "limits/Check run size = false' to try anyway.");
+  }
+
+  template <int dim> void MechanicsSolver<dim>::check_mesh_references() const
+  {
+    // The coarse mesh, and so its boundary ids, is known on every rank.
+    const auto  ids = triangulation.get_boundary_ids();
+    std::string present;
+    for (const auto id : ids)
+      present += (present.empty() ? "" : ", ") + std::to_string(id);
+    const auto check =
+        [&](const types::boundary_id id, const std::string &parameter)
+    {
+      if (std::find(ids.begin(), ids.end(), id) == ids.end())
+        throw InputError(
+            "Parameter '" + parameter + "' names boundary id " +
+            std::to_string(id) +
+            ", which the mesh does not have (its boundary ids: " + present +
+            "). Fix: use the boundary ids of the mesh (see the "
+            "mesh type's documentation or the mesh file).");
+    };
+    for (const auto &d : boundary_conditions.dirichlet)
+      check(d.boundary_id, "Boundary conditions/Dirichlet boundary ids");
+    for (const auto &t : boundary_conditions.tractions)
+      check(t.boundary_id, "Boundary conditions/Traction boundary ids");
+    for (const auto &p : boundary_conditions.pressures)
+      check(p.boundary_id, "Boundary conditions/Pressure boundary ids");
+    for (const auto id : contact_parameters.slave_boundary_ids)
+      check(id, "Contact/Slave boundary ids");
+
+    const auto values = solid->point_displacements(monitor_points);
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (std::isnan(values[k][0]))
+      {
+        std::ostringstream point;
+        for (unsigned int d = 0; d < dim; ++d)
+          point << (d ? ", " : "") << monitor_points[k][d];
+        throw InputError("Parameter 'Output/Monitor points': point " +
+                         std::to_string(k + 1) + " (" + point.str() +
+                         " m) is not inside the mesh. Fix: give reference "
+                         "positions inside the body (m).");
+      }
   }
 
   template <int dim>

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <iomanip>
 #include <softgrasp/mechanics/newton_solver.h>
 #include <sstream>
@@ -36,6 +37,12 @@ namespace softgrasp
         return result;
       }
       result.residuals.push_back(state.residual_norm);
+      if (!std::isfinite(state.residual_norm))
+      {
+        result.failure = "the residual is NaN or Inf (a material or load "
+                         "evaluation failed)";
+        return result;
+      }
       const double tolerance =
           std::max(parameters.relative_tolerance * state.force_scale,
                    parameters.absolute_tolerance);
@@ -82,8 +89,11 @@ namespace softgrasp
       {
         log << std::endl;
         std::ostringstream why;
-        why << "the linear solver did not converge in " << linear.iterations
-            << " iterations (residual " << linear.residual << ")";
+        if (!linear.breakdown.empty())
+          why << linear.breakdown;
+        else
+          why << "the linear solver did not converge in " << linear.iterations
+              << " iterations (residual " << linear.residual << ")";
         result.failure = why.str();
         return result;
       }

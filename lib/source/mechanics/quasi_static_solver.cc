@@ -64,6 +64,18 @@ namespace softgrasp
     std::string report;
     if (!resume)
     {
+      if (mortar)
+      {
+        const auto [inside, depth] =
+            mortar->overlap(0.0, solid->ghosted_solution());
+        if (inside > 0)
+          pcout << "Warning: " << inside
+                << " contact node(s) start inside a rigid body (up to " << depth
+                << " m); the first step pushes them out at once, which may "
+                   "need cut-backs. Fix: start the rigid bodies outside the "
+                   "tissue."
+                << std::endl;
+      }
       if (!solve_step(0.0, report))
         throw SolverFailure("The initial state (t = 0) is not in equilibrium "
                             "and Newton failed on it: " +

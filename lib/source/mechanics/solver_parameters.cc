@@ -17,6 +17,10 @@ namespace softgrasp
     const std::vector<std::pair<std::string, LinearSolverType>> solver_names = {
         {"direct", LinearSolverType::direct},
         {"iterative", LinearSolverType::iterative}};
+    const std::vector<std::pair<std::string, ExistingResults>>
+        existing_results_names = {{"move aside", ExistingResults::move_aside},
+                                  {"replace", ExistingResults::replace},
+                                  {"refuse", ExistingResults::refuse}};
 
     template <typename Enum>
     std::string
@@ -251,6 +255,15 @@ namespace softgrasp
                       Patterns::Bool(),
                       "Print every Newton iteration (residual, line search, "
                       "linear iterations) besides the per-step progress.");
+    prm.declare_entry(
+        "Existing results",
+        "move aside",
+        Patterns::Selection(selection(existing_results_names)),
+        "What a new run (not a resume) does with the results of an earlier "
+        "run in 'Directory' (the files whose names start with 'Base name', "
+        "and checkpoints): 'move aside' moves them into a subfolder "
+        "'previous-run-<n>', 'replace' deletes them, 'refuse' stops with an "
+        "error. A directory never mixes the files of two runs.");
     prm.leave_subsection();
   }
 
@@ -261,6 +274,8 @@ namespace softgrasp
     base_name    = prm.get("Base name");
     vtu_interval = prm.get_integer("VTU interval");
     verbose      = prm.get_bool("Verbose");
+    existing_results =
+        lookup(existing_results_names, prm.get("Existing results"));
     monitor_points.clear();
     for (const std::string &point :
          Utilities::split_string_list(prm.get("Monitor points"), ';'))
@@ -349,7 +364,9 @@ namespace softgrasp
                       Patterns::Double(0),
                       "Stop the run (writing the last good state) when the "
                       "relative energy balance error exceeds this: the sign "
-                      "of an unstable step. Unit: 1.");
+                      "of an unstable step. 0 switches the check off (the "
+                      "balance error is still recorded in the history). "
+                      "Unit: 1.");
     prm.declare_entry("Force kernel",
                       "vectorized",
                       Patterns::Selection("vectorized|reference"),
@@ -377,6 +394,35 @@ namespace softgrasp
     prm.leave_subsection();
   }
 
+  void LimitParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Run limits");
+    prm.declare_entry(
+        "Check run size",
+        "true",
+        Patterns::Bool(),
+        "Before a run starts, estimate its memory (from the number of cells "
+        "after refinement, the element and the solver) and its number of "
+        "load steps or recorded states, and refuse it if the memory exceeds "
+        "that of the machines its MPI ranks run on, or the steps exceed "
+        "'Maximum steps'. Set to false to run it anyway.");
+    prm.declare_entry("Maximum steps",
+                      "1000000",
+                      Patterns::Integer(1),
+                      "Largest number of quasi-static load steps, or of "
+                      "recorded states of an explicit run, that 'Time/End "
+                      "time' / 'Time/Time step' may imply. Unit: 1.");
+    prm.leave_subsection();
+  }
+
+  void LimitParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Run limits");
+    check_size    = prm.get_bool("Check run size");
+    maximum_steps = prm.get_integer("Maximum steps");
+    prm.leave_subsection();
+  }
+
   void SolverParameters::declare_parameters(ParameterHandler &prm)
   {
     DiscretizationParameters::declare_parameters(prm);
@@ -386,6 +432,7 @@ namespace softgrasp
     OutputParameters::declare_parameters(prm);
     CheckpointParameters::declare_parameters(prm);
     ExplicitParameters::declare_parameters(prm);
+    LimitParameters::declare_parameters(prm);
   }
 
   void SolverParameters::parse_parameters(ParameterHandler &prm)
@@ -397,5 +444,6 @@ namespace softgrasp
     output.parse_parameters(prm);
     checkpoint.parse_parameters(prm);
     explicit_dynamics.parse_parameters(prm);
+    limits.parse_parameters(prm);
   }
 } // namespace softgrasp

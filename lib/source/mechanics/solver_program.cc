@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iostream>
+#include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/mechanics/mechanics_solver.h>
 #include <softgrasp/mechanics/solver_program.h>
@@ -81,6 +82,7 @@ namespace softgrasp
         file_given = true;
       }
     }
+    const ErrorCommunicator error_comm(comm);
     try
     {
       if (print_parameters)
@@ -126,9 +128,7 @@ namespace softgrasp
     }
     catch (const std::exception &e)
     {
-      if (root)
-        std::cerr << "\nError: " << e.what() << std::endl;
-      return 1;
+      return fatal_error(e, error_comm);
     }
     return 0;
   }

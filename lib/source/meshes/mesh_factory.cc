@@ -16,6 +16,30 @@ namespace softgrasp
     const std::vector<std::pair<std::string, int>> type_names = {
         {"block", 0}, {"Cook's membrane", 1}, {"ball", 2}, {"file", 3}};
 
+    /// "v, v[, v]": one value per coordinate direction.
+    template <int dim> std::string per_direction(const std::string &value)
+    {
+      return dim == 2 ? value + ", " + value
+                      : value + ", " + value + ", " + value;
+    }
+
+    /// A list with one value for all directions or one per direction.
+    template <int dim, typename T>
+    std::vector<T> per_direction_list(const std::vector<T> &values,
+                                      const std::string    &path)
+    {
+      if (values.size() != 1 && values.size() != dim)
+        throw InputError("Parameter '" + path + "' has " +
+                         std::to_string(values.size()) + " values; a " +
+                         std::to_string(dim) + "D block needs " +
+                         std::to_string(dim) +
+                         " (one per direction) or 1 (the same in all). Fix: "
+                         "give " +
+                         std::to_string(dim) + " values.");
+      return values.size() == dim ? values
+                                  : std::vector<T>(dim, values.front());
+    }
+
     template <int dim>
     Point<dim> parse_point(const std::string &text, const std::string &path)
     {
@@ -28,11 +52,12 @@ namespace softgrasp
       catch (...)
       {
       }
-      if (values.size() < dim)
+      if (values.size() != dim)
         throw InputError("Parameter '" + path + "' = '" + text + "' needs " +
                          std::to_string(dim) +
-                         " comma-separated coordinates (m). Fix: give one "
-                         "number per coordinate.");
+                         " comma-separated coordinates (m) in a " +
+                         std::to_string(dim) +
+                         "D problem. Fix: give one number per coordinate.");
       Point<dim> p;
       for (unsigned int d = 0; d < dim; ++d)
         p[d] = values[d];
@@ -67,19 +92,19 @@ namespace softgrasp
                       "distorted elements. Unit: 1.");
     prm.enter_subsection("Block");
     prm.declare_entry("Lower corner",
-                      "0, 0, 0",
+                      per_direction<dim>("0"),
                       Patterns::Anything(),
                       "Corner with the smallest coordinates. Unit: m.");
     prm.declare_entry("Upper corner",
-                      "0.01, 0.01, 0.01",
+                      per_direction<dim>("0.01"),
                       Patterns::Anything(),
                       "Corner with the largest coordinates. Unit: m.");
     prm.declare_entry("Subdivisions",
-                      "2, 2, 2",
+                      per_direction<dim>("2"),
                       Patterns::List(Patterns::Integer(1)),
                       "Elements per direction before refinement. Unit: 1.");
     prm.declare_entry("Grading",
-                      "1, 1, 1",
+                      per_direction<dim>("1"),
                       Patterns::List(Patterns::Double(0)),
                       "Per direction, the size ratio of neighbouring "
                       "elements from the lower to the upper corner: 1 is "
@@ -102,7 +127,7 @@ namespace softgrasp
     prm.leave_subsection();
     prm.enter_subsection("Ball");
     prm.declare_entry("Center",
-                      "0, 0, 0",
+                      per_direction<dim>("0"),
                       Patterns::Anything(),
                       "Centre of the ball. Unit: m.");
     prm.declare_entry(
@@ -152,16 +177,16 @@ namespace softgrasp
         parse_point<dim>(prm.get("Lower corner"), "Mesh/Block/Lower corner");
     upper =
         parse_point<dim>(prm.get("Upper corner"), "Mesh/Block/Upper corner");
-    subdivisions.clear();
+    std::vector<unsigned int> n;
     for (const std::string &s :
          Utilities::split_string_list(prm.get("Subdivisions")))
-      subdivisions.push_back(Utilities::string_to_int(s));
-    subdivisions.resize(dim, subdivisions.empty() ? 1 : subdivisions.back());
-    grading.clear();
+      n.push_back(Utilities::string_to_int(s));
+    subdivisions = per_direction_list<dim>(n, "Mesh/Block/Subdivisions");
+    std::vector<double> ratios;
     for (const std::string &s :
          Utilities::split_string_list(prm.get("Grading")))
-      grading.push_back(Utilities::string_to_double(s));
-    grading.resize(dim, grading.empty() ? 1.0 : grading.back());
+      ratios.push_back(Utilities::string_to_double(s));
+    grading = per_direction_list<dim>(ratios, "Mesh/Block/Grading");
     for (const double g : grading)
       if (!(g > 0))
         throw InputError("Parameter 'Mesh/Block/Grading' must be positive. "
@@ -193,6 +218,12 @@ namespace softgrasp
     prm.enter_subsection("File");
     file_name = Utilities::trim(prm.get("File name"));
     scale     = prm.get_double("Scale");
+    if (!(scale > 0))
+      throw InputError("Parameter 'Mesh/File/Scale' is " +
+                       std::to_string(scale) +
+                       "; it must be positive. Fix: give the factor from the "
+                       "file's length unit to metres (1 for metres, 1e-3 for "
+                       "millimetres).");
     if (type == Type::file && file_name.empty())
       throw InputError("Parameter 'Mesh/File name' is empty but 'Mesh/Type' "
                        "is 'file'. Fix: name a .msh or .inp file.");

@@ -2,6 +2,7 @@
 #include <deal.II/base/mpi.h>
 #include <filesystem>
 #include <iostream>
+#include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/grasp/indentation_study.h>
 #include <softgrasp/mechanics/solver_program.h>
@@ -85,6 +86,7 @@ namespace softgrasp
       else
         filename = arg;
     }
+    const ErrorCommunicator error_comm(comm);
     try
     {
       ParameterHandler prm;
@@ -110,9 +112,7 @@ namespace softgrasp
     }
     catch (const std::exception &e)
     {
-      if (root)
-        std::cerr << "\nError: " << e.what() << std::endl;
-      return 1;
+      return fatal_error(e, error_comm);
     }
     return 0;
   }

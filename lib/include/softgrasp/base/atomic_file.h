@@ -21,6 +21,20 @@ namespace softgrasp
 
     /// Rename @p from to @p to (atomic replace); throws on failure.
     void commit(const std::string &from, const std::string &to);
+
+    /// A message for a failed write of @p filename with @p cause, naming
+    /// the directory and the fix.
+    std::string write_error(const std::string &filename,
+                            const std::string &cause);
+
+    /**
+     * Why the file @p filename, written by another library (MPI-IO, HDF5,
+     * gnuplot), is not complete, or "" if it is: it must end with
+     * @p ending and, if @p text, contain no zero byte.
+     */
+    std::string check_written(const std::string &filename,
+                              const std::string &ending,
+                              bool               text);
   } // namespace AtomicFile
 } // namespace softgrasp
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace softgrasp
@@ -32,6 +33,14 @@ namespace softgrasp
     /// Parse the file @p filename into @p prm.
     void read_file(dealii::ParameterHandler &prm,
                    const std::string        &filename) const;
+
+    /**
+     * Every entry of @p prm as "Section/Subsection/Name" and its value, in
+     * the order deal.II prints them (for records such as the settings a
+     * checkpoint must be resumed with).
+     */
+    static std::vector<std::pair<std::string, std::string>>
+    flatten(const dealii::ParameterHandler &prm);
 
     /// Parse @p text (from @p source, used in messages) into @p prm.
     void read_string(dealii::ParameterHandler &prm,

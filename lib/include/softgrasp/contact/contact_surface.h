@@ -7,6 +7,7 @@
 #include <softgrasp/contact/nodal_contact_law.h>
 #include <softgrasp/mechanics/solid_system.h>
 #include <softgrasp/rigid/rigid_body_set.h>
+#include <utility>
 #include <vector>
 
 namespace softgrasp
@@ -65,6 +66,14 @@ namespace softgrasp
     const std::vector<Node> &nodes() const;
     const RigidBodySet      &rigid_bodies() const;
     bool is_slave_boundary(const dealii::types::boundary_id id) const;
+
+    /**
+     * The slave nodes (global count) that lie inside a rigid body at
+     * @p time when displaced by @p u (ghosted), and the deepest overlap
+     * (m). Places the bodies at @p time.
+     */
+    std::pair<unsigned int, double>
+    overlap(const double time, const dealii::TrilinosWrappers::MPI::Vector &u);
 
     /// Global numbers of closed and of slipping nodes at the last
     /// evaluation.

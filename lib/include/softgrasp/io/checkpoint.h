@@ -2,6 +2,7 @@
 #define softgrasp_io_checkpoint_h
 
 #include <deal.II/distributed/tria.h>
+#include <ostream>
 #include <softgrasp/mechanics/solid_system.h>
 #include <string>
 #include <utility>
@@ -41,15 +42,22 @@ namespace softgrasp
    * (p4est and deal.II's SolutionTransfer, so a run may restart on a
    * different number of ranks) and the RunState (Boost serialization).
    *
-   * A checkpoint is written into "<directory>/checkpoint.new" and then
-   * renamed to "<directory>/checkpoint", keeping the previous one as
-   * "checkpoint.old" until the rename is done: a run killed at any moment
-   * leaves at least one complete checkpoint.
+   * A checkpoint is written into "<directory>/checkpoint.new", completed by
+   * a manifest (format version, size and checksum of every file, the
+   * settings that must not change across a resume) and then renamed to
+   * "<directory>/checkpoint"; the one before is kept as "checkpoint.old".
+   * A resume validates the manifest, every file and the settings before it
+   * touches p4est; a damaged newest checkpoint falls back to the previous
+   * one; anything else stops with an InputError that names the cause. See
+   * doc/reliability.md.
    */
   template <int dim> class Checkpoint
   {
   public:
-    explicit Checkpoint(std::string directory);
+    /// Entries (full .prm path, value) that a resume must not change.
+    using Settings = std::vector<std::pair<std::string, std::string>>;
+
+    Checkpoint(std::string directory, Settings settings);
 
     void save(const dealii::parallel::distributed::Triangulation<dim> &tria,
               const SolidSystem<dim>                                  &system,
@@ -57,22 +65,34 @@ namespace softgrasp
               const std::vector<const dealii::TrilinosWrappers::MPI::Vector *>
                   &extra = {}) const;
 
-    /// True if a complete checkpoint exists.
+    /// True if a checkpoint (complete or not) exists.
     bool exists() const;
 
     /**
      * Load into @p tria (which holds the same coarse mesh as the saved run)
      * and @p system (set up here); returns the saved RunState. The fields
      * saved besides the displacement go into @p extra (owned entries).
+     * Warnings (a damaged newest checkpoint) go to @p log on rank 0.
      */
-    RunState
-    load(dealii::parallel::distributed::Triangulation<dim>  &tria,
-         SolidSystem<dim>                                   &system,
-         std::vector<dealii::TrilinosWrappers::MPI::Vector> &extra) const;
+    RunState load(dealii::parallel::distributed::Triangulation<dim>  &tria,
+                  SolidSystem<dim>                                   &system,
+                  std::vector<dealii::TrilinosWrappers::MPI::Vector> &extra,
+                  std::ostream &log) const;
+
+    /// The manifest's format version.
+    static constexpr unsigned int format_version = 2;
 
   private:
-    std::string complete_directory() const;
+    /// The checkpoint to resume from, validated on rank 0, on all ranks.
+    std::string select(MPI_Comm comm, std::ostream &log) const;
+    /// Why @p path cannot be used ("" if it can); settings are not compared.
+    std::string damage(const std::string &path) const;
+    /// The settings that differ from @p path's manifest ("" if none).
+    std::string changed_settings(const std::string &path) const;
+    void        write_manifest(const std::string &path) const;
+
     std::string directory;
+    Settings    settings;
   };
 } // namespace softgrasp
 

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <memory>
 #include <softgrasp/mechanics/solver_parameters.h>
+#include <string>
 #include <vector>
 
 class Epetra_MultiVector;
@@ -26,6 +27,9 @@ namespace softgrasp
       bool         converged  = false;
       unsigned int iterations = 0;
       double       residual   = 0; ///< final Krylov residual norm
+      /// why it failed, if it broke down (empty if it merely ran out of
+      /// iterations)
+      std::string breakdown;
     };
 
     explicit LinearSolver(const LinearSolverParameters &parameters);

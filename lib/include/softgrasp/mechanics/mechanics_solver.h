@@ -9,6 +9,7 @@
 #include <memory>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/base/progress_reporter.h>
+#include <softgrasp/base/run_directory.h>
 #include <softgrasp/contact/contact_output.h>
 #include <softgrasp/contact/contact_surface.h>
 #include <softgrasp/io/checkpoint.h>
@@ -116,6 +117,10 @@ namespace softgrasp
             &extra = {});
     /// The mesh and material lines at the start of a run.
     void print_summary(const std::string &discretization) const;
+    /// Refuse runs that need more memory or steps than allowed.
+    void check_run_size() const;
+    /// Boundary ids and monitor points that the mesh must have.
+    void check_mesh_references() const;
 
     MPI_Comm                                          comm;
     dealii::ConditionalOStream                        pcout;
@@ -135,6 +140,7 @@ namespace softgrasp
     HistoryWriter                                     history_writer;
     HistoryWriter                                     contact_writer;
     Checkpoint<dim>                                   checkpoint;
+    std::unique_ptr<RunDirectory>                     run_directory;
     ProgressReporter                                  progress;
     RunState                                          state;
     std::vector<dealii::Point<dim>>                   monitor_points;

@@ -2,6 +2,7 @@
 #define softgrasp_mechanics_solver_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <softgrasp/base/run_directory.h>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,8 @@ namespace softgrasp
     /// reference points (m) whose displacement goes into the history CSV
     std::vector<std::vector<double>> monitor_points;
     bool                             verbose = true; ///< Newton details
+    /// what a new run does with an earlier run's results in the directory
+    ExistingResults existing_results = ExistingResults::move_aside;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
@@ -138,6 +141,18 @@ namespace softgrasp
   };
 
   /// All solver settings; the materials, mesh and loads are read elsewhere.
+  /// Refusal of runs too large for the machines ("Run limits").
+  struct LimitParameters
+  {
+    /// refuse runs estimated to need more memory than the machines have,
+    /// or more than maximum_steps load steps or recorded states
+    bool         check_size    = true;
+    unsigned int maximum_steps = 1000000; ///< 1
+
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void        parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   struct SolverParameters
   {
     DiscretizationParameters discretization;
@@ -147,6 +162,7 @@ namespace softgrasp
     OutputParameters         output;
     CheckpointParameters     checkpoint;
     ExplicitParameters       explicit_dynamics;
+    LimitParameters          limits;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,92 @@
+#!/bin/bash
+# Bad input is refused with a message that names the real cause (its line
+# or parameter) and exit code 1 -- never a signal, a hang, a library banner
+# or a silent run (block_compression, coarse).
+#   bad_input.sh <block_compression> <its .prm> <work dir>
+set -euo pipefail
+exe=$1 prm=$2 work=$3
+. "$(dirname "$0")/common.sh"
+start_in_work_dir "$work" "$prm"
+sed -i 's/set End time  = 1/set End time = 0.1/' base.prm
+
+# refused <name> <expected message>: base.prm mutated into <name>.prm fails.
+refused() {
+  run_expect 1 "$1.log" "$exe" "$1.prm"
+  expect_clean_error "$1.log"
+  expect_message "$1.log" "$2"
+  [ ! -e out-$1 ] || [ -z "$(ls out-$1)" ] || { echo "FAIL: $1 wrote results"; exit 1; }
+}
+line_of() { grep -n -- "$1" base.prm | head -1 | cut -d: -f1; }
+
+# Structure: the message names the line of the fault itself.
+n=$(line_of "^  set Formulation")
+sed "$((n + 1))d" base.prm > missing-end.prm          # the 'end' of 'Finite element'
+refused missing-end "line $(line_of "^subsection Finite element"): 'subsection Finite element' is never closed"
+expect_message missing-end.log "probably before line $((n + 2))" # the next subsection
+sed "${n}a end" base.prm > extra-end.prm
+refused extra-end "line $((n + 2)): 'end' without a matching 'subsection'"
+sed "${n}s/=//" base.prm > no-equals.prm
+refused no-equals "line $n: 'set Formulation        mixed u-p-J' has no '='"
+sed "${n}s/set /sett /" base.prm > bad-keyword.prm
+refused bad-keyword "line $n: 'sett Formulation"
+{ head -c 200 base.prm; printf 'se\0t x\n'; tail -c +201 base.prm; } > nul-byte.prm
+refused nul-byte "has binary data on line"
+head -c 3000 "$exe" > binary.prm # an executable given by mistake
+refused binary "has binary data on line"
+mkdir -p a-directory.prm
+run_expect 1 directory.log "$exe" a-directory.prm
+expect_message directory.log "'a-directory.prm' is a directory"
+
+# Values the mesh or the physics does not have.
+with_prm base.prm unknown-bc.prm "Boundary conditions" "set Dirichlet boundary ids = 4, 5, 9" \
+  "subsection Dirichlet boundary 9" "set Components = x" "set Displacement = 0; 0; 0" end
+refused unknown-bc "'Boundary conditions/Dirichlet boundary ids' names boundary id 9, which the mesh does not have (its boundary ids: 0, 1, 2, 3, 4, 5)"
+with_prm base.prm unknown-slave.prm Contact "set Slave boundary ids = 7"
+refused unknown-slave "boundary id 7"
+with_prm base.prm far-monitor.prm Output "set Monitor points = 0.02, 0.01, 0.005; 1, 1, 1"
+refused far-monitor "point 2 (1, 1, 1 m) is not inside the mesh"
+with_prm base.prm grading.prm Mesh "subsection Block" "set Grading = 1, 2" end
+refused grading "'Mesh/Block/Grading' has 2 values; a 3D block needs 3"
+with_prm base.prm corner.prm Mesh "subsection Block" "set Upper corner = 0.02, 0.02, 0.01, 5" end
+refused corner "'Mesh/Block/Upper corner' = '0.02, 0.02, 0.01, 5' needs 3"
+with_prm base.prm scale.prm Mesh "set Type = file" "subsection File" "set File name = x.msh" "set Scale = 0" end
+refused scale "'Mesh/File/Scale' is 0"
+with_prm base.prm friction.prm Contact "set Friction coefficient = 30"
+refused friction "'Contact/Friction coefficient' = 30"
+with_prm base.prm typo.prm Time "set End tim = 1"
+refused typo "No entry with name <End tim> was declared"
+with_prm base.prm unknown-model.prm Materials "subsection Material 0" "set Model = neo-hooke" end
+refused unknown-model "neo-hooke"
+
+# Runs too large for the machine, or with millions of steps: refused up
+# front with an estimate, unless the user overrides the check.
+with_prm base.prm huge-mesh.prm Mesh "set Global refinements = 9"
+refused huge-mesh "needs about"
+expect_message huge-mesh.log "'Run limits/Check run size = false'"
+with_prm base.prm many-steps.prm Time "set End time = 1e4" "set Time step = 1e-3"
+refused many-steps "exceed 'Run limits/Maximum steps' = 1000000"
+with_prm many-steps.prm allowed-steps.prm "Run limits" "set Check run size = false" \
+  && with_prm allowed-steps.prm allowed-steps-short.prm Time "set End time = 2e-3"
+run_expect 0 allowed.log "$exe" allowed-steps-short.prm
+
+# A body held by nothing: refused before the singular tangent is met.
+without_boundary_conditions() { awk '/^subsection Boundary conditions/{skip=1} /^subsection Time/{skip=0} !skip' base.prm; }
+without_boundary_conditions > free-body.prm
+with_prm free-body.prm free-body-load.prm "Boundary conditions" "set Traction boundary ids = 5" \
+  "subsection Traction boundary 5" "set Traction = 0; 0; -100 * t" end
+refused free-body-load "nothing holds the body"
+
+# A body held in x only: the tangent is singular; MUMPS fails or returns a
+# useless update (an inverted element). Either way the step is cut back (a
+# solver breakdown is a failed step), then the run stops with its last
+# converged state written.
+with_prm free-body.prm held-in-x.prm "Boundary conditions" "set Dirichlet boundary ids = 4" \
+  "subsection Dirichlet boundary 4" "set Components = x" "set Displacement = 0; 0; 0" end \
+  "set Traction boundary ids = 5" "subsection Traction boundary 5" "set Traction = 0; 0; -100 * t" end
+run_expect 1 held-in-x.log "$exe" held-in-x.prm
+expect_clean_error held-in-x.log
+grep -qE "the direct solver \(MUMPS\) failed|an element inverted" held-in-x.log || {
+  echo "FAIL: held-in-x: no failed step reported"; exit 1; }
+expect_message held-in-x.log "-> cutting back"
+expect_message held-in-x.log "The last converged state (step 0, t = 0 s) was written"
+echo "bad input: all cases passed"
