@@ -34,6 +34,18 @@ namespace softgrasp
       {
         try
         {
+          // The directory first: a bad one must not cost a MuJoCo run.
+          const auto directory =
+              std::filesystem::path(kinematics_file).parent_path();
+          std::error_code code;
+          if (!directory.empty() &&
+              !std::filesystem::create_directories(directory, code) && code)
+            throw InputError("Cannot create the directory '" +
+                             directory.string() + "' of the kinematics file (" +
+                             code.message() +
+                             "). Fix: choose an 'Output/Directory' (and "
+                             "'Indentation study/Kinematics file') in a "
+                             "writable place.");
           GraspParameters parameters;
           parameters.parse_parameters(
               prm, std::filesystem::path(prm_file).parent_path().string());
@@ -45,8 +57,6 @@ namespace softgrasp
                            std::chrono::steady_clock::now() - start)
                            .count()
                     << " s wall time\n";
-          std::filesystem::create_directories(
-              std::filesystem::path(kinematics_file).parent_path());
           write_kinematics_file(data, kinematics_file);
           std::cout << "Kinematics file: " << kinematics_file << "\n\n";
         }
