@@ -105,12 +105,20 @@ namespace softgrasp
       const hsize_t dims[2] = {rows, columns};
       Handle        space(H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr),
                    H5Sclose);
-      Handle        set(H5Dcreate2(location,
+      // One chunk with a Fletcher-32 checksum: a damaged value is refused
+      // on reading instead of being used.
+      Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+      if (rows * columns > 0)
+      {
+        H5Pset_chunk(properties, columns == 1 ? 1 : 2, dims);
+        H5Pset_fletcher32(properties);
+      }
+      Handle set(H5Dcreate2(location,
                             name.c_str(),
                             H5T_NATIVE_DOUBLE,
                             space,
                             H5P_DEFAULT,
-                            H5P_DEFAULT,
+                            properties,
                             H5P_DEFAULT),
                  H5Dclose);
       if (rows * columns > 0)
@@ -393,8 +401,12 @@ namespace softgrasp
   {
     const std::string temporary = AtomicFile::temporary_name(filename);
     {
+      // The HDF5 1.10 file format: its metadata (object headers with the
+      // attributes) carries checksums, so damage is detected on reading.
+      Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+      H5Pset_libver_bounds(access, H5F_LIBVER_V110, H5F_LIBVER_V110);
       Handle file(
-          H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+          H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access),
           H5Fclose);
       if (file < 0)
         throw InputError("Cannot create the kinematics file '" + filename +
