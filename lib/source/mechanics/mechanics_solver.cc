@@ -125,14 +125,13 @@ namespace softgrasp
   MechanicsSolver<dim>::prepare_run(const std::vector<std::string> &leading,
                                     const std::vector<std::string> &trailing)
   {
+    const bool resume = solver_parameters.checkpoint.resume;
+    // A resume holds the lock before it reads the checkpoint; a new run
+    // takes the directory (and moves earlier results aside) only after its
+    // input has been checked, so that a refused run changes nothing.
     run_directory.reset();
-    run_directory = std::make_unique<RunDirectory>(
-        comm,
-        solver_parameters.output.directory,
-        solver_parameters.output.base_name,
-        solver_parameters.output.existing_results,
-        solver_parameters.checkpoint.resume,
-        std::cout);
+    if (resume)
+      claim_output_directory();
     const unsigned int mapping_degree =
         mesh.has_curved_boundary() ? solver_parameters.discretization.degree
                                    : 1;
@@ -143,9 +142,9 @@ namespace softgrasp
                                                mapping_degree,
                                                timers);
     solid->set_tangent_needed(needs_tangent());
-    stopped           = false;
-    last_output_step  = static_cast<unsigned int>(-1);
-    const bool resume = solver_parameters.checkpoint.resume;
+    stopped          = false;
+    last_output_step = static_cast<unsigned int>(-1);
+    check_contact_setup();
     {
       TimerOutput::Scope scope(timers, "setup");
       mesh.create_coarse_mesh(triangulation);
@@ -174,27 +173,9 @@ namespace softgrasp
         material_library.get(cell->material_id()); // throws if unmapped
     check_mesh_references();
 
-    const bool has_surface = !contact_parameters.slave_boundary_ids.empty();
-    if (needs_tangent() && boundary_conditions.dirichlet.empty() &&
-        !has_surface)
-      throw InputError(
-          "No Dirichlet boundary and no contact: nothing holds the body, so "
-          "it is free to move as a rigid body and the quasi-static problem "
-          "has no unique solution. Fix: fix a boundary ('Boundary "
-          "conditions/Dirichlet boundary ids'), or use 'Time/Integrator = "
-          "explicit dynamic', where inertia decides the motion.");
-    if (has_surface && bodies.empty())
-      throw InputError("'Contact/Slave boundary ids' is set but there is no "
-                       "rigid body. Fix: name the bodies in 'Rigid "
-                       "bodies/Names' (or add them in code), or leave the "
-                       "slave boundary ids empty.");
-    if (!has_surface && !bodies.empty())
-      throw InputError("Rigid bodies are given but no contact surface. Fix: "
-                       "set 'Contact/Slave boundary ids' to the boundary ids "
-                       "of the surface the bodies touch.");
     contact_surface.reset();
     surface_output.reset();
-    if (has_surface)
+    if (!contact_parameters.slave_boundary_ids.empty())
     {
       double shear_modulus = 0;
       for (const auto id : material_library.material_ids())
@@ -216,8 +197,50 @@ namespace softgrasp
             << ", t = " << state.time << " s." << std::endl;
       return;
     }
-    state                            = RunState();
-    state.step_size                  = solver_parameters.time.step_size;
+    claim_output_directory();
+    state           = RunState();
+    state.step_size = solver_parameters.time.step_size;
+    set_history_columns(leading, trailing);
+  }
+
+  template <int dim> void MechanicsSolver<dim>::claim_output_directory()
+  {
+    run_directory = std::make_unique<RunDirectory>(
+        comm,
+        solver_parameters.output.directory,
+        solver_parameters.output.base_name,
+        solver_parameters.output.existing_results,
+        solver_parameters.checkpoint.resume,
+        std::cout);
+  }
+
+  template <int dim> void MechanicsSolver<dim>::check_contact_setup() const
+  {
+    const bool has_surface = !contact_parameters.slave_boundary_ids.empty();
+    if (needs_tangent() && boundary_conditions.dirichlet.empty() &&
+        !has_surface)
+      throw InputError(
+          "No Dirichlet boundary and no contact: nothing holds the body, so "
+          "it is free to move as a rigid body and the quasi-static problem "
+          "has no unique solution. Fix: fix a boundary ('Boundary "
+          "conditions/Dirichlet boundary ids'), or use 'Time/Integrator = "
+          "explicit dynamic', where inertia decides the motion.");
+    if (has_surface && bodies.empty())
+      throw InputError("'Contact/Slave boundary ids' is set but there is no "
+                       "rigid body. Fix: name the bodies in 'Rigid "
+                       "bodies/Names' (or add them in code), or leave the "
+                       "slave boundary ids empty.");
+    if (!has_surface && !bodies.empty())
+      throw InputError("Rigid bodies are given but no contact surface. Fix: "
+                       "set 'Contact/Slave boundary ids' to the boundary ids "
+                       "of the surface the bodies touch.");
+  }
+
+  template <int dim>
+  void MechanicsSolver<dim>::set_history_columns(
+      const std::vector<std::string> &leading,
+      const std::vector<std::string> &trailing)
+  {
     std::vector<std::string> columns = {"step", "time"};
     columns.insert(columns.end(), leading.begin(), leading.end());
     const char *axes[] = {"x", "y", "z"};

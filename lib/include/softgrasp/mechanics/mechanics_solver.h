@@ -117,6 +117,14 @@ namespace softgrasp
             &extra = {});
     /// The mesh and material lines at the start of a run.
     void print_summary(const std::string &discretization) const;
+    /// Lock the output directory (and clear an earlier run's results).
+    void claim_output_directory();
+    /// Refuse a body held by nothing, and contact without bodies or
+    /// bodies without contact.
+    void check_contact_setup() const;
+    /// The history tables' columns of a new run.
+    void set_history_columns(const std::vector<std::string> &leading,
+                             const std::vector<std::string> &trailing);
     /// Refuse runs that need more memory or steps than allowed.
     void check_run_size() const;
     /// Boundary ids and monitor points that the mesh must have.
