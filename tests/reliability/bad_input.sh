@@ -72,6 +72,11 @@ refused huge-mesh "needs about"
 expect_message huge-mesh.log "'Run limits/Check run size = false'"
 with_prm base.prm many-steps.prm Time "set End time = 1e4" "set Time step = 1e-3"
 refused many-steps "exceed 'Run limits/Maximum steps' = 1000000"
+with_prm base.prm explicit-steps.prm Time "set Integrator = explicit dynamic" \
+  && with_prm explicit-steps.prm tiny-step.prm "Explicit dynamics" "set Fixed time step = 1e-12"
+run_expect 1 tiny-step.log "$exe" tiny-step.prm
+expect_clean_error tiny-step.log
+expect_message tiny-step.log "more than 'Run limits/Maximum explicit steps'"
 with_prm many-steps.prm allowed-steps.prm "Run limits" "set Check run size = false" \
   && with_prm allowed-steps.prm allowed-steps-short.prm Time "set End time = 2e-3"
 run_expect 0 allowed.log "$exe" allowed-steps-short.prm

@@ -1,4 +1,5 @@
 #include <array>
+#include <cmath>
 #include <deal.II/dofs/dof_tools.h>
 #include <iomanip>
 #include <limits>
@@ -384,6 +385,21 @@ namespace softgrasp
           std::to_string(critical_step) +
           " s): the run would blow up. Fix: set it to 0 (the stable step) "
           "or below the critical step.");
+    const auto  &limits  = this->solver_parameters.limits;
+    const double n_steps = (time.end_time - integrator->time()) / time_step;
+    if (limits.check_size && n_steps > limits.maximum_explicit_steps)
+    {
+      std::ostringstream message;
+      message << "The explicit run needs about " << n_steps << " steps of "
+              << time_step << " s to reach 'Time/End time' = " << time.end_time
+              << " s, more than 'Run limits/Maximum explicit steps' = "
+              << limits.maximum_explicit_steps
+              << ". Fix: a shorter end time, 'Explicit dynamics/Mass scaling "
+                 "time step' for quasi-static loading, a coarser mesh, or a "
+                 "larger limit ('Run limits/Check run size = false' skips the "
+                 "check).";
+      throw InputError(message.str());
+    }
     this->pcout << "Explicit dynamics: critical step " << critical_step
                 << " s, step " << time_step << " s, added mass " << added_mass
                 << " %, about "

@@ -289,7 +289,8 @@ namespace softgrasp
     const double steps = time.end_time / time.step_size;
     if (steps > limits.maximum_steps)
       throw InputError(
-          "'Time/End time' / 'Time/Time step' = " + std::to_string(steps) +
+          "'Time/End time' / 'Time/Time step' = " +
+          std::to_string(std::llround(steps)) +
           " steps (or recorded states) exceed 'Run limits/Maximum steps' = " +
           std::to_string(limits.maximum_steps) +
           ". Fix: a larger 'Time/Time step' (explicit runs take their own "

@@ -405,21 +405,30 @@ namespace softgrasp
         "after refinement, the element and the solver) and its number of "
         "load steps or recorded states, and refuse it if the memory exceeds "
         "that of the machines its MPI ranks run on, or the steps exceed "
-        "'Maximum steps'. Set to false to run it anyway.");
+        "'Maximum steps' (explicit runs: the integration steps exceed "
+        "'Maximum explicit steps'). Set to false to run it anyway.");
     prm.declare_entry("Maximum steps",
                       "1000000",
                       Patterns::Integer(1),
                       "Largest number of quasi-static load steps, or of "
                       "recorded states of an explicit run, that 'Time/End "
                       "time' / 'Time/Time step' may imply. Unit: 1.");
+    prm.declare_entry("Maximum explicit steps",
+                      "1e8",
+                      Patterns::Double(1),
+                      "Largest number of explicit integration steps (of the "
+                      "stable or fixed step) to reach 'Time/End time'; 1e8 "
+                      "steps of 200k unknowns take about 10 days on one core. "
+                      "Unit: 1.");
     prm.leave_subsection();
   }
 
   void LimitParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Run limits");
-    check_size    = prm.get_bool("Check run size");
-    maximum_steps = prm.get_integer("Maximum steps");
+    check_size             = prm.get_bool("Check run size");
+    maximum_steps          = prm.get_integer("Maximum steps");
+    maximum_explicit_steps = prm.get_double("Maximum explicit steps");
     prm.leave_subsection();
   }
 

@@ -148,6 +148,8 @@ namespace softgrasp
     /// or more than maximum_steps load steps or recorded states
     bool         check_size    = true;
     unsigned int maximum_steps = 1000000; ///< 1
+    /// largest number of explicit integration steps (stable step); 1
+    double maximum_explicit_steps = 1e8;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
