@@ -1,4 +1,5 @@
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector_operation.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/contact/contact_surface.h>
@@ -122,25 +123,37 @@ namespace softgrasp
   }
 
   template <int dim>
-  std::pair<unsigned int, double>
-  ContactSurface<dim>::overlap(const double                         time,
-                               const TrilinosWrappers::MPI::Vector &u)
+  template <typename VectorType>
+  std::vector<double> ContactSurface<dim>::node_overlaps(const double      time,
+                                                         const VectorType &u)
   {
     set_time(time);
     place_bodies(time, poses_now);
+    std::vector<double> overlaps(node_list.size(), 0.0);
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      Eigen::Vector3d x = node_list[j].reference_position;
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] += u(node_list[j].dofs[c]);
+      const Proximity p = nearest(x);
+      if (p.body >= 0 && p.gap < 0)
+        overlaps[j] = -p.gap;
+    }
+    return overlaps;
+  }
+
+  template <int dim>
+  std::pair<unsigned int, double> ContactSurface<dim>::overlap_summary(
+      const std::vector<double> &overlaps) const
+  {
     unsigned int inside  = 0;
     double       deepest = 0;
-    for (const auto &node : node_list)
-    {
-      Eigen::Vector3d x = node.reference_position;
-      for (unsigned int c = 0; c < dim; ++c)
-        x[c] += u(node.dofs[c]);
-      const Proximity p = nearest(x);
-      if (p.body < 0 || !(p.gap < 0))
-        continue;
-      deepest = std::max(deepest, -p.gap);
-      ++inside;
-    }
+    for (const double depth : overlaps)
+      if (depth > 0)
+      {
+        ++inside;
+        deepest = std::max(deepest, depth);
+      }
     return {Utilities::MPI::sum(inside, comm),
             Utilities::MPI::max(deepest, comm)};
   }
@@ -272,4 +285,14 @@ namespace softgrasp
 
   template class ContactSurface<2>;
   template class ContactSurface<3>;
+  template std::vector<double>
+  ContactSurface<2>::node_overlaps(const double,
+                                   const TrilinosWrappers::MPI::Vector &);
+  template std::vector<double>
+                               ContactSurface<3>::node_overlaps(const double,
+                                   const TrilinosWrappers::MPI::Vector &);
+  template std::vector<double> ContactSurface<2>::node_overlaps(
+      const double, const LinearAlgebra::distributed::Vector<double> &);
+  template std::vector<double> ContactSurface<3>::node_overlaps(
+      const double, const LinearAlgebra::distributed::Vector<double> &);
 } // namespace softgrasp

@@ -154,28 +154,10 @@ namespace softgrasp
   std::pair<unsigned int, double> ExplicitContact<dim>::relax_initial_overlap(
       const double time, const VectorType &u, const unsigned int steps)
   {
-    this->set_time(time);
-    this->place_bodies(time, poses_now);
-    allowance.assign(node_list.size(), 0.0);
-    relaxation           = steps;
-    steps_done           = 0;
-    unsigned int inside  = 0;
-    double       deepest = 0;
-    for (unsigned int j = 0; j < node_list.size(); ++j)
-    {
-      const auto     &node = node_list[j];
-      Eigen::Vector3d x    = node.reference_position;
-      for (unsigned int c = 0; c < dim; ++c)
-        x[c] += u(node.dofs[c]);
-      const Proximity p = this->nearest(x);
-      if (p.body < 0 || p.gap >= 0)
-        continue;
-      allowance[j] = -p.gap;
-      deepest      = std::max(deepest, -p.gap);
-      ++inside;
-    }
-    return {Utilities::MPI::sum(inside, comm),
-            Utilities::MPI::max(deepest, comm)};
+    allowance  = this->node_overlaps(time, u);
+    relaxation = steps;
+    steps_done = 0;
+    return this->overlap_summary(allowance);
   }
 
   template <int dim> double ExplicitContact<dim>::max_penetration() const

@@ -241,17 +241,6 @@ namespace softgrasp
         return "the file '" + name + "' is damaged (its size or checksum " +
                "differs from the manifest)";
     }
-    try
-    {
-      RunState                      state;
-      std::ifstream                 in(fs::path(path) / "state.txt");
-      boost::archive::text_iarchive archive(in);
-      archive >> state;
-    }
-    catch (const std::exception &e)
-    {
-      return std::string("its state file cannot be read (") + e.what() + ")";
-    }
     return "";
   }
 
@@ -336,12 +325,6 @@ namespace softgrasp
     return Utilities::MPI::broadcast(comm, chosen, 0);
   }
 
-  template <int dim> bool Checkpoint<dim>::exists() const
-  {
-    return fs::exists(directory + "/checkpoint") ||
-           fs::exists(directory + "/checkpoint.old");
-  }
-
   template <int dim>
   RunState
   Checkpoint<dim>::load(parallel::distributed::Triangulation<dim>  &tria,
@@ -351,10 +334,19 @@ namespace softgrasp
   {
     const std::string source = select(system.communicator(), log);
     RunState          state;
+    try // intact (checksum), but perhaps of another Boost archive version
     {
       std::ifstream                 in(source + "/state.txt");
       boost::archive::text_iarchive archive(in);
       archive >> state;
+    }
+    catch (const std::exception &e)
+    {
+      throw InputError("The state file of the checkpoint in '" + source +
+                       "' cannot be read (" + e.what() +
+                       "): it was written by a softgrasp built with another "
+                       "Boost version. Fix: resume with that build, or set "
+                       "'Checkpoint/Resume = false'.");
     }
     try
     {

@@ -66,8 +66,8 @@ namespace softgrasp
     {
       if (mortar)
       {
-        const auto [inside, depth] =
-            mortar->overlap(0.0, solid->ghosted_solution());
+        const auto [inside, depth] = mortar->overlap_summary(
+            mortar->node_overlaps(0.0, solid->ghosted_solution()));
         if (inside > 0)
           pcout << "Warning: " << inside
                 << " contact node(s) start inside a rigid body (up to " << depth

@@ -68,12 +68,16 @@ namespace softgrasp
     bool is_slave_boundary(const dealii::types::boundary_id id) const;
 
     /**
-     * The slave nodes (global count) that lie inside a rigid body at
-     * @p time when displaced by @p u (ghosted), and the deepest overlap
-     * (m). Places the bodies at @p time.
+     * How deep (m) each locally owned slave node lies inside a rigid body
+     * at @p time when displaced by @p u (ghosted; 0 outside). Places the
+     * bodies at @p time. For Trilinos and deal.II distributed vectors.
      */
+    template <typename VectorType>
+    std::vector<double> node_overlaps(const double time, const VectorType &u);
+
+    /// The global number of nodes with an overlap and the deepest (m).
     std::pair<unsigned int, double>
-    overlap(const double time, const dealii::TrilinosWrappers::MPI::Vector &u);
+    overlap_summary(const std::vector<double> &overlaps) const;
 
     /// Global numbers of closed and of slipping nodes at the last
     /// evaluation.

@@ -65,9 +65,6 @@ namespace softgrasp
               const std::vector<const dealii::TrilinosWrappers::MPI::Vector *>
                   &extra = {}) const;
 
-    /// True if a checkpoint (complete or not) exists.
-    bool exists() const;
-
     /**
      * Load into @p tria (which holds the same coarse mesh as the saved run)
      * and @p system (set up here); returns the saved RunState. The fields
