@@ -4,6 +4,8 @@
 
 namespace softgrasp
 {
+  using namespace dealii;
+
   namespace Meshes
   {
     using namespace dealii;
@@ -50,4 +52,48 @@ namespace softgrasp
                                 const double,
                                 const unsigned int);
   } // namespace Meshes
+
+  template <int dim>
+  void CookMembraneMesh<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Cook's membrane");
+    prm.declare_entry("Elements per edge",
+                      "8",
+                      Patterns::Integer(1),
+                      "Elements along each edge of the membrane. Unit: 1.");
+    prm.declare_entry("Thickness",
+                      "0.001",
+                      Patterns::Double(0),
+                      "Out-of-plane thickness (3D only). Unit: m.");
+    prm.declare_entry("Layers",
+                      "1",
+                      Patterns::Integer(1),
+                      "Elements through the thickness (3D only). Unit: 1.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void CookMembraneMesh<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Cook's membrane");
+    elements_per_edge = prm.get_integer("Elements per edge");
+    thickness         = prm.get_double("Thickness");
+    layers            = prm.get_integer("Layers");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void CookMembraneMesh<dim>::create_coarse_mesh(
+      Triangulation<dim> &triangulation) const
+  {
+    Meshes::cook_membrane(triangulation, elements_per_edge, thickness, layers);
+  }
+
+  template class CookMembraneMesh<2>;
+  template class CookMembraneMesh<3>;
 } // namespace softgrasp
+
+SOFTGRASP_REGISTER_MESH(softgrasp::CookMembraneMesh,
+                        cook_membrane,
+                        "Cook's membrane",
+                        "Cook's tapered membrane (a bending benchmark)")

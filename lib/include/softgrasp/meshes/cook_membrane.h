@@ -2,6 +2,7 @@
 #define softgrasp_meshes_cook_membrane_h
 
 #include <deal.II/grid/tria.h>
+#include <softgrasp/meshes/mesh_generator.h>
 
 namespace softgrasp
 {
@@ -23,6 +24,20 @@ namespace softgrasp
                        const double                thickness = 1e-3,
                        const unsigned int          n_layers  = 1);
   } // namespace Meshes
+
+  /// 'Mesh/Type = Cook's membrane': Meshes::cook_membrane() from the .prm.
+  template <int dim> class CookMembraneMesh : public MeshGenerator<dim>
+  {
+  public:
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void        parse_parameters(dealii::ParameterHandler &prm) override;
+    void        create_coarse_mesh(
+               dealii::Triangulation<dim> &triangulation) const override;
+
+    unsigned int elements_per_edge = 8;
+    double       thickness         = 1e-3; ///< m, 3D only
+    unsigned int layers            = 1;
+  };
 } // namespace softgrasp
 
 #endif
