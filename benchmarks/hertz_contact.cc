@@ -49,7 +49,8 @@ main(int argc, char **argv)
                                                 nu,
                                                 depth),
                      "benchmark");
-  softgrasp::QuasiStaticSolver<3> solver(comm, prm);
+  softgrasp::QuasiStaticSolver<3> solver(
+      comm, softgrasp::SolverInputs<3>::parse(prm));
   solver.run();
 
   const auto   exact  = softgrasp_tests::hertz_solution(nu, depth);

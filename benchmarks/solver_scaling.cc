@@ -53,7 +53,8 @@ main(int argc, char **argv)
   softgrasp::ParameterReader reader;
   softgrasp::MechanicsSolver<3>::add_passes(reader);
   reader.read_string(prm_handler, prm.str(), "solver_scaling");
-  softgrasp::QuasiStaticSolver<3> solver(comm, prm_handler);
+  softgrasp::QuasiStaticSolver<3> solver(
+      comm, softgrasp::SolverInputs<3>::parse(prm_handler));
   solver.run();
 
   const auto times =

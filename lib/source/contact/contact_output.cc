@@ -212,7 +212,13 @@ namespace softgrasp
   std::vector<double>
   ContactOutput<dim>::history_values(const SolidSystem<dim> &system) const
   {
-    const auto          forces = geom_forces(system);
+    return history_values(geom_forces(system));
+  }
+
+  template <int dim>
+  std::vector<double> ContactOutput<dim>::history_values(
+      const std::vector<std::vector<GeomContactForce>> &forces) const
+  {
     const auto         &bodies = contact.rigid_bodies().bodies();
     std::vector<double> row;
     const auto          vector = [&](const Eigen::Vector3d &v) {
@@ -233,7 +239,7 @@ namespace softgrasp
         vector(f.lateral_part);
         vector(f.friction);
         // normal force: positive when the tissue pushes the geom inwards
-        row.push_back(-f.normal.dot(f.force));
+        row.push_back(f.normal_force());
         row.push_back(f.lateral_part.norm());
         row.push_back(f.friction.norm());
         row.push_back(f.area);
@@ -293,4 +299,60 @@ namespace softgrasp
 
   template class ContactOutput<2>;
   template class ContactOutput<3>;
+
+  std::vector<double> ContactForceRecord::pack() const
+  {
+    std::vector<double> data = {double(step), time, double(forces.size())};
+    for (const auto &body : forces)
+    {
+      data.push_back(body.size());
+      for (const auto &f : body)
+      {
+        for (const Eigen::Vector3d *v : {&f.force,
+                                         &f.moment,
+                                         &f.normal,
+                                         &f.normal_part,
+                                         &f.lateral_part,
+                                         &f.friction})
+          data.insert(data.end(), v->data(), v->data() + 3);
+        data.insert(data.end(), {f.area, double(f.active), double(f.slipping)});
+      }
+    }
+    return data;
+  }
+
+  ContactForceRecord ContactForceRecord::unpack(const std::vector<double> &data)
+  {
+    std::size_t i    = 0;
+    const auto  next = [&]()
+    {
+      if (i >= data.size())
+        throw std::runtime_error("A packed contact force record is "
+                                 "truncated.");
+      return data[i++];
+    };
+    ContactForceRecord r;
+    r.step = static_cast<unsigned int>(next());
+    r.time = next();
+    r.forces.resize(static_cast<std::size_t>(next()));
+    for (auto &body : r.forces)
+    {
+      body.resize(static_cast<std::size_t>(next()));
+      for (auto &f : body)
+      {
+        for (Eigen::Vector3d *v : {&f.force,
+                                   &f.moment,
+                                   &f.normal,
+                                   &f.normal_part,
+                                   &f.lateral_part,
+                                   &f.friction})
+          for (unsigned int d = 0; d < 3; ++d)
+            (*v)[d] = next();
+        f.area     = next();
+        f.active   = static_cast<unsigned int>(next());
+        f.slipping = static_cast<unsigned int>(next());
+      }
+    }
+    return r;
+  }
 } // namespace softgrasp

@@ -13,8 +13,9 @@ namespace softgrasp
   using namespace dealii;
 
   template <int dim>
-  ExplicitSolver<dim>::ExplicitSolver(MPI_Comm comm, ParameterHandler &prm)
-      : MechanicsSolver<dim>(comm, prm)
+  ExplicitSolver<dim>::ExplicitSolver(MPI_Comm                 comm,
+                                      const SolverInputs<dim> &inputs)
+      : MechanicsSolver<dim>(comm, inputs)
   {
     this->n_restored_fields = 2; // half-step velocity, highest mode
   }

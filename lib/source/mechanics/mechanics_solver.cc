@@ -38,58 +38,30 @@ namespace softgrasp
   std::unique_ptr<MechanicsSolver<dim>>
   MechanicsSolver<dim>::create(MPI_Comm comm, ParameterHandler &prm)
   {
-    TimeParameters time; // the one place that maps the entry to the enum
-    time.parse_parameters(prm);
-    if (time.integrator == TimeIntegrator::explicit_dynamic)
-      return std::make_unique<ExplicitSolver<dim>>(comm, prm);
-    return std::make_unique<QuasiStaticSolver<dim>>(comm, prm);
+    return create(comm, SolverInputs<dim>::parse(prm));
   }
 
-  namespace
+  template <int dim>
+  std::unique_ptr<MechanicsSolver<dim>>
+  MechanicsSolver<dim>::create(MPI_Comm comm, const SolverInputs<dim> &inputs)
   {
-    template <typename T> T parsed(ParameterHandler &prm)
-    {
-      T object;
-      object.parse_parameters(prm);
-      return object;
-    }
-
-    /// The entries a resume must not change: the dimension, the element,
-    /// the mesh, the materials, contact, rigid bodies and the integrator
-    /// (which decides the fields a checkpoint holds).
-    std::vector<std::pair<std::string, std::string>>
-    resume_settings(const ParameterHandler &prm)
-    {
-      const std::vector<std::string>                   prefixes = {"Dimension",
-                                                                   "Finite element/",
-                                                                   "Mesh/",
-                                                                   "Materials/",
-                                                                   "Contact/",
-                                                                   "Rigid bodies/",
-                                                                   "Time/Integrator"};
-      std::vector<std::pair<std::string, std::string>> kept;
-      for (const auto &entry : ParameterReader::flatten(prm))
-        for (const auto &prefix : prefixes)
-          if (entry.first.rfind(prefix, 0) == 0)
-          {
-            kept.push_back(entry);
-            break;
-          }
-      return kept;
-    }
-  } // namespace
+    if (inputs.solver.time.integrator == TimeIntegrator::explicit_dynamic)
+      return std::make_unique<ExplicitSolver<dim>>(comm, inputs);
+    return std::make_unique<QuasiStaticSolver<dim>>(comm, inputs);
+  }
 
   template <int dim>
-  MechanicsSolver<dim>::MechanicsSolver(MPI_Comm comm, ParameterHandler &prm)
+  MechanicsSolver<dim>::MechanicsSolver(MPI_Comm                 comm,
+                                        const SolverInputs<dim> &inputs)
       : comm(comm)
       , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
       , verbose_out(std::cout, false)
-      , solver_parameters(parsed<SolverParameters>(prm))
-      , mesh(parsed<MeshFactory<dim>>(prm))
-      , material_library(parsed<MaterialLibrary>(prm))
-      , boundary_conditions(parsed<BoundaryConditions<dim>>(prm))
-      , contact_parameters(parsed<ContactParameters>(prm))
-      , bodies(parsed<RigidBodySet>(prm))
+      , solver_parameters(inputs.solver)
+      , mesh(inputs.mesh)
+      , material_library(inputs.materials)
+      , boundary_conditions(inputs.boundary_conditions)
+      , contact_parameters(inputs.contact)
+      , bodies(inputs.bodies)
       // Per-rank timers (statistics over ranks come from
       // print_wall_time_statistics): no barrier per section, and no MPI in
       // the destructor, which may run while an error unwinds.
@@ -101,7 +73,7 @@ namespace softgrasp
                        solver_parameters.output.base_name + "_history.csv")
       , contact_writer(solver_parameters.output.directory + "/" +
                        solver_parameters.output.base_name + "_contact.csv")
-      , checkpoint(solver_parameters.output.directory, resume_settings(prm))
+      , checkpoint(solver_parameters.output.directory, inputs.resume_settings)
   {
     verbose_out.set_condition(solver_parameters.output.verbose &&
                               Utilities::MPI::this_mpi_process(comm) == 0);
@@ -192,7 +164,10 @@ namespace softgrasp
       history_writer.rows    = state.history_rows;
       contact_writer.columns = state.contact_columns;
       contact_writer.rows    = state.contact_rows;
-      field_output.records   = state.output_records;
+      contact_forces.clear();
+      for (const auto &packed : state.contact_force_records)
+        contact_forces.push_back(ContactForceRecord::unpack(packed));
+      field_output.records = state.output_records;
       pcout << "Resumed from the checkpoint at step " << state.step
             << ", t = " << state.time << " s." << std::endl;
       return;
@@ -260,6 +235,7 @@ namespace softgrasp
         contact_columns.push_back(name);
       contact_writer.set_columns(contact_columns);
       contact_writer.rows.clear();
+      contact_forces.clear();
     }
   }
 
@@ -397,10 +373,15 @@ namespace softgrasp
     history_writer.add_row(row);
     if (surface_output)
     {
+      ContactForceRecord record;
+      record.step                     = state.step;
+      record.time                     = time;
+      record.forces                   = surface_output->geom_forces(*solid);
       std::vector<double> contact_row = {double(state.step), time};
-      for (const double v : surface_output->history_values(*solid))
+      for (const double v : surface_output->history_values(record.forces))
         contact_row.push_back(v);
       contact_writer.add_row(contact_row);
+      contact_forces.push_back(std::move(record));
     }
     TimerOutput::Scope scope(timers, "output");
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -444,6 +425,9 @@ namespace softgrasp
     state.output_records  = field_output.records;
     state.contact_columns = contact_writer.columns;
     state.contact_rows    = contact_writer.rows;
+    state.contact_force_records.clear();
+    for (const auto &record : contact_forces)
+      state.contact_force_records.push_back(record.pack());
     solid->update_ghosts();
     checkpoint.save(triangulation, *solid, state, extra);
   }
@@ -503,6 +487,13 @@ namespace softgrasp
   const HistoryWriter &MechanicsSolver<dim>::contact_history() const
   {
     return contact_writer;
+  }
+
+  template <int dim>
+  const std::vector<ContactForceRecord> &
+  MechanicsSolver<dim>::contact_force_history() const
+  {
+    return contact_forces;
   }
 
   template <int dim> TimerOutput &MechanicsSolver<dim>::timer()

@@ -10,9 +10,9 @@ namespace softgrasp
   using namespace dealii;
 
   template <int dim>
-  QuasiStaticSolver<dim>::QuasiStaticSolver(MPI_Comm          comm,
-                                            ParameterHandler &prm)
-      : MechanicsSolver<dim>(comm, prm)
+  QuasiStaticSolver<dim>::QuasiStaticSolver(MPI_Comm                 comm,
+                                            const SolverInputs<dim> &inputs)
+      : MechanicsSolver<dim>(comm, inputs)
       , newton(this->solver_parameters.newton, this->verbose_out)
   {
   }

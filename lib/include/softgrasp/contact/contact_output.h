@@ -30,6 +30,28 @@ namespace softgrasp
     double          area     = 0; ///< contact area, deformed (m^2; m in 2D)
     unsigned int    active   = 0; ///< closed nodes
     unsigned int    slipping = 0; ///< sliding nodes
+
+    /// Normal force magnitude: positive when the tissue pushes the geom
+    /// against its reference normal, -n . F (N).
+    double normal_force() const
+    {
+      return -normal.dot(force);
+    }
+  };
+
+  /**
+   * The forces on every geom, [body][geom], at one recorded step: the
+   * typed contact history that studies read (rather than CSV columns).
+   */
+  struct ContactForceRecord
+  {
+    unsigned int                               step = 0;
+    double                                     time = 0; ///< s
+    std::vector<std::vector<GeomContactForce>> forces;
+
+    /// The record as numbers (for checkpoints) and back.
+    std::vector<double>       pack() const;
+    static ContactForceRecord unpack(const std::vector<double> &data);
   };
 
   /**
@@ -57,6 +79,9 @@ namespace softgrasp
     std::vector<std::string> history_columns() const;
     /// Per geom and per body quantities at the current state. Collective.
     std::vector<double> history_values(const SolidSystem<dim> &system) const;
+    /// The same from the geom forces of the current state.
+    std::vector<double> history_values(
+        const std::vector<std::vector<GeomContactForce>> &forces) const;
 
     /// Add the contact surface fields to @p data_out. Collective.
     void add_fields(const SolidSystem<dim> &system,

@@ -41,7 +41,7 @@ namespace softgrasp
   public:
     using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
 
-    ExplicitSolver(MPI_Comm comm, dealii::ParameterHandler &prm);
+    ExplicitSolver(MPI_Comm comm, const SolverInputs<dim> &inputs);
 
     void run() override;
 

@@ -3,43 +3,75 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <mpi.h>
+#include <softgrasp/grasp/link_force_history.h>
 #include <softgrasp/io/history_writer.h>
 #include <softgrasp/io/kinematics_file.h>
+#include <softgrasp/mechanics/solver_inputs.h>
 #include <string>
+#include <vector>
 
 namespace softgrasp
 {
   template <int dim> class MechanicsSolver;
 
+  /// The settings of a grasp study's finite element stage ("Indentation
+  /// study" subsection), parsed once.
+  struct GraspStudyParameters
+  {
+    /// Where the tissue mesh goes: at the object body's recorded pose
+    /// (position and orientation), or at its position only (a ball whose
+    /// mesh stays aligned with the world axes).
+    enum class Placement
+    {
+      pose,
+      position
+    };
+
+    std::string              kinematics_file = "kinematics.h5";
+    bool                     run_rigid_stage = true;
+    std::string              object_body     = "object";
+    std::vector<std::string> phases          = {"indentation"};
+    Placement                placement       = Placement::pose;
+    std::string              target_link;      ///< body/geom; empty: none
+    double                   target_force = 0; ///< N; 0: none
+    bool                     pictures     = true;
+
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void        parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   /**
-   * The finite element half of a grasp study: from the equilibrium grasp a
-   * rigid-body simulator recorded (a kinematics file), drive the same rigid
-   * finger links further into the tissue along the recorded "indentation"
-   * phase, until its end or until a target normal force on a chosen link.
+   * The finite element half of a grasp study: from the grasp a rigid-body
+   * simulator recorded (a kinematics file), drive the same rigid finger
+   * links into the tissue along the recorded phases ('Phases', in order,
+   * e.g. "indentation, pull"), until their end or until a target normal
+   * force on a chosen link.
    *
    * The run is a MechanicsSolver<3> ('Time/Integrator': quasi-static or
-   * explicit dynamic) on the .prm's mesh, materials and
-   * contact settings; the study sets
-   *  - the rigid bodies: every body of the file with geoms (capsules stay
-   *    capsules), moving on the recorded poses, with the equilibrium contact
-   *    normals as reference normals for the normal/lateral split;
-   *  - "Time/End time" to the phase's duration (time 0 = equilibrium);
-   *  - "Mesh/Ball/Center" to the grasped object's recorded position, if the
-   *    mesh is a generated ball.
+   * explicit dynamic) built from typed SolverInputs, parsed once from the
+   * .prm; the study sets, in those typed values (never in the .prm):
+   *  - the rigid bodies: every body of the file with geoms, moving on the
+   *    recorded poses, with the equilibrium contact normals as reference
+   *    normals for the normal/lateral split;
+   *  - the end time: the phases' duration (time 0 = start of the first);
+   *  - the tissue mesh's placement at the object body's recorded pose
+   *    (set_up_tissue(), which a study may override, e.g. to supply its
+   *    own mesh or fixed boundaries).
    *
    * Afterwards it writes <base>_links.csv: per step the closure (rad) and,
    * per link, the finite element normal, lateral and friction-only force
    * next to the rigid simulator's normal and lateral force at the same
-   * closure; and (with gnuplot) <base>_forces.png, force against closure
-   * per link, and <base>_picture.png, the indented body coloured by e_max
-   * with the link geoms drawn. SI units throughout.
+   * time; and (with gnuplot) <base>_forces.png and <base>_picture.png.
+   * A study adds its own output in postprocess(). SI units throughout.
    */
   class IndentationStudy
   {
   public:
     static void declare_parameters(dealii::ParameterHandler &prm);
 
+    /// Parse the study's and the solver's settings from @p prm.
     IndentationStudy(MPI_Comm comm, dealii::ParameterHandler &prm);
+    virtual ~IndentationStudy() = default;
 
     /// Run on @p kinematics (read from the file, or just computed).
     void run(const KinematicsData &kinematics);
@@ -50,7 +82,7 @@ namespace softgrasp
     /// True if the .prm asks to run the rigid-body simulator first.
     bool rigid_stage_requested() const
     {
-      return run_rigid;
+      return parameters.run_rigid_stage;
     }
 
     /// Results of the last run() (rank 0 and all ranks).
@@ -70,20 +102,37 @@ namespace softgrasp
     /// The side-by-side table (FE and rigid simulator) of the last run.
     const HistoryWriter &link_table() const;
 
-  private:
-    void write_link_table(const MechanicsSolver<3> &solver,
-                          const KinematicsData     &phase);
+    /// The finite element force history of every link of the last run.
+    const std::vector<LinkForceHistory> &link_forces() const;
 
-    MPI_Comm                  comm;
-    dealii::ParameterHandler &prm;
-    std::string               file_name;
-    std::string               target_link;
-    double                    target_force  = 0; ///< N; 0: none
-    bool                      make_pictures = true;
-    bool                      run_rigid     = true;
-    double                    extra_angle   = 0;
-    Summary                   result;
-    HistoryWriter             table;
+  protected:
+    /**
+     * Put the tissue into @p inputs for a run that starts at the recorded
+     * pose @p object of the grasped body: by default the .prm's mesh,
+     * placed at that pose ('Tissue placement'). Override to supply another
+     * mesh generator, boundary conditions or materials.
+     */
+    virtual void set_up_tissue(SolverInputs<3> &inputs,
+                               const Pose      &object) const;
+
+    /// Study-specific output after the run (all ranks, collective).
+    virtual void postprocess(const MechanicsSolver<3> &solver,
+                             const KinematicsData     &phases);
+
+    MPI_Comm             comm;
+    GraspStudyParameters parameters;
+    SolverInputs<3>      solver_inputs;
+
+  private:
+    void summarise(const MechanicsSolver<3> &solver,
+                   const KinematicsData     &phases);
+    void write_link_table(const MechanicsSolver<3> &solver,
+                          const KinematicsData     &phases);
+
+    double                        extra_angle = 0;
+    Summary                       result;
+    HistoryWriter                 table;
+    std::vector<LinkForceHistory> fe_links;
   };
 } // namespace softgrasp
 

@@ -26,13 +26,15 @@ namespace softgrasp
     unsigned int n_extra_fields = 0;
     /// The time integrator's own scalars (e.g. energy accumulators).
     std::vector<double> integrator_state;
+    /// The typed contact force history, one packed record per step.
+    std::vector<std::vector<double>> contact_force_records;
 
     template <class Archive>
     void serialize(Archive &archive, const unsigned int /*version*/)
     {
       archive &time &step_size &step &n_outputs &history_columns &history_rows
           &output_records &contact_columns &contact_rows &n_extra_fields
-              &integrator_state;
+              &integrator_state &contact_force_records;
     }
   };
 
@@ -76,8 +78,9 @@ namespace softgrasp
                   std::vector<dealii::TrilinosWrappers::MPI::Vector> &extra,
                   std::ostream &log) const;
 
-    /// The manifest's format version.
-    static constexpr unsigned int format_version = 2;
+    /// The manifest's format version (3: with the typed contact force
+    /// history in the state).
+    static constexpr unsigned int format_version = 3;
 
   private:
     /// The checkpoint to resume from, validated on rank 0, on all ranks.

@@ -18,6 +18,7 @@
 #include <softgrasp/materials/material_library.h>
 #include <softgrasp/mechanics/boundary_conditions.h>
 #include <softgrasp/mechanics/solid_system.h>
+#include <softgrasp/mechanics/solver_inputs.h>
 #include <softgrasp/mechanics/solver_parameters.h>
 #include <softgrasp/meshes/mesh_factory.h>
 #include <softgrasp/rigid/rigid_body_set.h>
@@ -57,11 +58,16 @@ namespace softgrasp
     static void declare_parameters(dealii::ParameterHandler &prm);
     static void add_passes(ParameterReader &reader);
 
-    /// The solver that 'Time/Integrator' names.
+    /// The solver that 'Time/Integrator' names, for the .prm's inputs.
     static std::unique_ptr<MechanicsSolver<dim>>
     create(MPI_Comm comm, dealii::ParameterHandler &prm);
 
-    MechanicsSolver(MPI_Comm comm, dealii::ParameterHandler &prm);
+    /// The solver that inputs.solver.time.integrator names, for typed
+    /// inputs (parsed once, then set by a study).
+    static std::unique_ptr<MechanicsSolver<dim>>
+    create(MPI_Comm comm, const SolverInputs<dim> &inputs);
+
+    MechanicsSolver(MPI_Comm comm, const SolverInputs<dim> &inputs);
     virtual ~MechanicsSolver() = default;
 
     /// Run from 0 to the end time (or continue from the checkpoint).
@@ -78,6 +84,8 @@ namespace softgrasp
     const ContactOutput<dim>  *contact_output() const;
     /// Per-step contact forces per geom and body (CSV).
     const HistoryWriter &contact_history() const;
+    /// The same as typed records, one per recorded step (all ranks).
+    const std::vector<ContactForceRecord> &contact_force_history() const;
     /**
      * Stop the run after the first recorded step at which @p criterion
      * (called on all ranks, after the step's history is recorded) returns
@@ -147,6 +155,7 @@ namespace softgrasp
     FieldOutput<dim>                                  field_output;
     HistoryWriter                                     history_writer;
     HistoryWriter                                     contact_writer;
+    std::vector<ContactForceRecord>                   contact_forces;
     Checkpoint<dim>                                   checkpoint;
     std::unique_ptr<RunDirectory>                     run_directory;
     ProgressReporter                                  progress;

@@ -21,7 +21,7 @@ namespace softgrasp
   template <int dim> class QuasiStaticSolver : public MechanicsSolver<dim>
   {
   public:
-    QuasiStaticSolver(MPI_Comm comm, dealii::ParameterHandler &prm);
+    QuasiStaticSolver(MPI_Comm comm, const SolverInputs<dim> &inputs);
 
     /// Solve all load steps (or continue from the checkpoint).
     void run() override;
