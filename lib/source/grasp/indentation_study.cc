@@ -49,10 +49,26 @@ namespace softgrasp
     return fe_links;
   }
 
+  std::string IndentationStudy::rigid_scene(const std::string &scene_file,
+                                            const std::string &) const
+  {
+    return scene_file;
+  }
+
+  void IndentationStudy::place_tissue(SolverInputs<3>    &inputs,
+                                      const Placement<3> &placement)
+  {
+    inputs.mesh.placement = placement;
+    for (const auto id : inputs.materials.material_ids())
+      inputs.materials.set(id,
+                           inputs.materials.get(id).placed(
+                               placement.rotation, placement.translation));
+  }
+
   void IndentationStudy::set_up_tissue(SolverInputs<3> &inputs,
                                        const Pose      &object) const
   {
-    auto &placement = inputs.mesh.placement;
+    Placement<3> placement;
     for (unsigned int d = 0; d < 3; ++d)
       placement.translation[d] = object.position[d];
     if (parameters.placement == GraspStudyParameters::Placement::pose)
@@ -62,6 +78,7 @@ namespace softgrasp
         for (unsigned int j = 0; j < 3; ++j)
           placement.rotation[i][j] = R(i, j);
     }
+    place_tissue(inputs, placement);
   }
 
   void IndentationStudy::postprocess(const MechanicsSolver<3> &,

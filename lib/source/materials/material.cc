@@ -384,7 +384,22 @@ namespace softgrasp
 
   StructuralDirections Material::structural_directions(const Point<3> &X) const
   {
-    return model->structural_directions(X);
+    const Point<3> own(transpose(frame_rotation) * (X - frame_translation));
+    StructuralDirections d = model->structural_directions(own);
+    for (unsigned int a = 0; a < d.n_directions; ++a)
+      d.direction[a] = frame_rotation * d.direction[a];
+    return d;
+  }
+
+  std::shared_ptr<const Material>
+  Material::placed(const Tensor<2, 3> &rotation,
+                   const Tensor<1, 3> &translation) const
+  {
+    auto copy = std::shared_ptr<Material>(new Material(*this));
+    // Compose: first this material's own placement, then the new one.
+    copy->frame_rotation    = rotation * frame_rotation;
+    copy->frame_translation = rotation * frame_translation + translation;
+    return copy;
   }
 
   double Material::density() const

@@ -15,19 +15,25 @@ namespace softgrasp
 
   namespace
   {
-    void read_study_parameters(ParameterHandler  &prm,
-                               const std::string &filename)
+    void read_study_parameters(
+        ParameterHandler                             &prm,
+        const std::string                            &filename,
+        const std::function<void(ParameterHandler &)> &declare_study)
     {
       GraspParameters::declare_parameters(prm);
-      IndentationStudy::declare_parameters(prm);
+      if (declare_study)
+        declare_study(prm);
+      else
+        IndentationStudy::declare_parameters(prm);
       SolverProgram::read_parameters<3>(prm, filename);
     }
 
     /// The rigid stage on rank 0; its error (if any) reaches every rank.
-    void run_rigid_stage(MPI_Comm           comm,
-                         ParameterHandler  &prm,
-                         const std::string &prm_file,
-                         const std::string &kinematics_file)
+    void run_rigid_stage(MPI_Comm                comm,
+                         ParameterHandler       &prm,
+                         const std::string      &prm_file,
+                         const IndentationStudy &study,
+                         const std::string      &kinematics_file)
     {
       std::string error;
       if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -49,6 +55,8 @@ namespace softgrasp
           GraspParameters parameters;
           parameters.parse_parameters(
               prm, std::filesystem::path(prm_file).parent_path().string());
+          parameters.scene_file =
+              study.rigid_scene(parameters.scene_file, directory.string());
           const auto      start = std::chrono::steady_clock::now();
           GraspSimulation simulation(parameters, std::cout);
           const auto      data = simulation.run();
@@ -100,20 +108,23 @@ namespace softgrasp
     try
     {
       ParameterHandler prm;
-      read_study_parameters(prm, filename);
+      read_study_parameters(prm, filename, declare_study_parameters);
       if (print)
       {
         if (root)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return 0;
       }
-      IndentationStudy study(comm, prm);
+      const std::unique_ptr<IndentationStudy> study_pointer =
+          make_study ? make_study(comm, prm)
+                     : std::make_unique<IndentationStudy>(comm, prm);
+      IndentationStudy &study = *study_pointer;
       prm.enter_subsection("Output");
       const std::string directory = prm.get("Directory");
       prm.leave_subsection();
       const std::string kinematics_file = study.kinematics_file(directory);
       if (study.rigid_stage_requested() || rigid_only)
-        run_rigid_stage(comm, prm, filename, kinematics_file);
+        run_rigid_stage(comm, prm, filename, study, kinematics_file);
       if (rigid_only)
         return 0;
       study.run(read_kinematics_file(kinematics_file));

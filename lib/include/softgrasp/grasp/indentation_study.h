@@ -85,6 +85,14 @@ namespace softgrasp
       return parameters.run_rigid_stage;
     }
 
+    /**
+     * The MuJoCo scene of the rigid stage, from the .prm's @p scene_file:
+     * that file itself, or (a study that builds its scene from its tissue's
+     * geometry) a scene written into @p directory. Called on rank 0.
+     */
+    virtual std::string rigid_scene(const std::string &scene_file,
+                                    const std::string &directory) const;
+
     /// Results of the last run() (rank 0 and all ranks).
     struct Summary
     {
@@ -114,6 +122,11 @@ namespace softgrasp
      */
     virtual void set_up_tissue(SolverInputs<3> &inputs,
                                const Pose      &object) const;
+
+    /// Place the tissue: the mesh and the materials' fibre direction
+    /// fields, both given in the tissue's own frame.
+    static void place_tissue(SolverInputs<3>    &inputs,
+                             const Placement<3> &placement);
 
     /// Study-specific output after the run (all ranks, collective).
     virtual void postprocess(const MechanicsSolver<3> &solver,

@@ -166,6 +166,16 @@ namespace softgrasp
     /// Structural (fibre) directions at reference position @p X (m).
     StructuralDirections structural_directions(const dealii::Point<3> &X) const;
 
+    /**
+     * This material for a body whose own frame is placed by x -> R x + t
+     * (a study's placement of a mesh): its fibre direction field, given in
+     * the body's own frame, becomes a(X) = R a_own(R^T (X - t)). The
+     * constitutive model is shared, not copied.
+     */
+    std::shared_ptr<const Material>
+    placed(const dealii::Tensor<2, 3> &rotation,
+           const dealii::Tensor<1, 3> &translation) const;
+
     double                density() const; ///< reference density rho_0 (kg/m^3)
     double                initial_shear_modulus() const; ///< mu_0 (Pa)
     double                bulk_modulus() const;          ///< kappa (Pa)
@@ -190,7 +200,10 @@ namespace softgrasp
                              Response                   &response);
 
     std::string                     material_name;
-    std::unique_ptr<IsochoricModel> model;
+    std::shared_ptr<IsochoricModel> model;
+    /// The placement of the frame the direction field is given in.
+    dealii::Tensor<2, 3> frame_rotation = dealii::unit_symmetric_tensor<3>();
+    dealii::Tensor<1, 3> frame_translation;
     VolumetricEnergy                volumetric;
     double                          rho0;
   };

@@ -1,7 +1,10 @@
 #ifndef softgrasp_mujoco_grasp_study_program_h
 #define softgrasp_mujoco_grasp_study_program_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <functional>
+#include <memory>
+#include <mpi.h>
 #include <string>
 
 namespace softgrasp
@@ -31,6 +34,13 @@ namespace softgrasp
     /// Run the rigid stage only (write the kinematics file and stop).
     bool                                          rigid_only = false;
     std::function<void(const IndentationStudy &)> report;
+    /// Declare the study's entries (default: IndentationStudy's).
+    std::function<void(dealii::ParameterHandler &)> declare_study_parameters;
+    /// Build the study from the parsed .prm (default: an IndentationStudy;
+    /// e.g. an ArmGraspStudy).
+    std::function<std::unique_ptr<IndentationStudy>(MPI_Comm,
+                                                    dealii::ParameterHandler &)>
+        make_study;
 
     int run(int argc, char **argv) const;
   };

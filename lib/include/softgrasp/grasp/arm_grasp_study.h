@@ -1,0 +1,43 @@
+#ifndef softgrasp_grasp_arm_grasp_study_h
+#define softgrasp_grasp_arm_grasp_study_h
+
+#include <softgrasp/grasp/indentation_study.h>
+#include <softgrasp/grasp/limb_scene.h>
+#include <softgrasp/meshes/layered_limb.h>
+
+namespace softgrasp
+{
+  /**
+   * The arm grasp (the source paper's first case study) on the layered
+   * limb: the rigid stage grasps a rigid arm made from the limb's own
+   * geometry (LimbScene), the finite element stage places the layered limb
+   * ('Mesh/Type = layered limb') at the arm body's recorded pose and drives
+   * the fingers into it. See doc/studies.md.
+   */
+  class ArmGraspStudy : public IndentationStudy
+  {
+  public:
+    static void declare_parameters(dealii::ParameterHandler &prm);
+
+    ArmGraspStudy(MPI_Comm comm, dealii::ParameterHandler &prm);
+
+    std::string rigid_scene(const std::string &hand_file,
+                            const std::string &directory) const override;
+
+    /// The limb's geometry (from 'Mesh/Layered limb').
+    const LimbGeometry &limb() const
+    {
+      return geometry;
+    }
+
+  protected:
+    void set_up_tissue(SolverInputs<3> &inputs,
+                       const Pose      &object) const override;
+
+  private:
+    LimbGeometry geometry;
+    LimbScene    scene;
+  };
+} // namespace softgrasp
+
+#endif
