@@ -20,3 +20,9 @@ if [ -x "$root/build/studies/sphere_squeeze/sphere_squeeze" ]; then
     > "$root/doc/parameters/sphere_squeeze.prm"
   echo "wrote doc/parameters/sphere_squeeze.prm (the sphere_squeeze study: rigid environment, indentation study and solver)"
 fi
+if [ -x "$root/build/studies/arm_grasp/arm_grasp" ]; then
+  (cd "$root/build/studies/arm_grasp" &&
+    ./arm_grasp --print-parameters arm_grasp.prm) \
+    > "$root/doc/parameters/arm_grasp.prm"
+  echo "wrote doc/parameters/arm_grasp.prm (the arm_grasp study: arm scene, layered limb, tissue materials)"
+fi

@@ -24,8 +24,9 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   softgrasp::GraspStudyProgram             program;
-  program.default_parameter_file   = "arm_grasp.prm";
-  program.declare_study_parameters = &softgrasp::ArmGraspStudy::declare_parameters;
+  program.default_parameter_file = "arm_grasp.prm";
+  program.declare_study_parameters =
+      &softgrasp::ArmGraspStudy::declare_parameters;
   program.make_study = [](MPI_Comm comm, dealii::ParameterHandler &prm)
   {
     return std::unique_ptr<softgrasp::IndentationStudy>(

@@ -14,8 +14,8 @@ namespace softgrasp
   ArmGraspStudy::ArmGraspStudy(MPI_Comm comm, ParameterHandler &prm)
       : IndentationStudy(comm, prm)
   {
-    const auto *limb = dynamic_cast<const LayeredLimb *>(
-        &solver_inputs.mesh.generator());
+    const auto *limb =
+        dynamic_cast<const LayeredLimb *>(&solver_inputs.mesh.generator());
     if (limb == nullptr)
       throw InputError("The arm grasp study needs 'Mesh/Type = layered "
                        "limb' (it is '" +
@@ -40,7 +40,7 @@ namespace softgrasp
     const Eigen::Vector3d t     = object.to_world(frame.position);
     const Eigen::Matrix3d R =
         (object.orientation * frame.orientation).toRotationMatrix();
-    Placement<3>          placement;
+    Placement<3> placement;
     for (unsigned int i = 0; i < 3; ++i)
     {
       placement.translation[i] = t[i];

@@ -54,8 +54,8 @@ namespace softgrasp
   Pose LimbScene::limb_frame_in_body(const LimbGeometry &limb)
   {
     Eigen::Matrix3d R; // columns: the limb's x, y, z in the body frame
-    R << 0, -1, 0, //
-        1, 0, 0,   //
+    R << 0, -1, 0,     //
+        1, 0, 0,       //
         0, 0, 1;
     Pose pose;
     pose.position    = Eigen::Vector3d(0, limb.length / 2, 0);
@@ -66,10 +66,12 @@ namespace softgrasp
   namespace
   {
     /// A binary STL of the limb's skin: two rings (the taper is linear, so
-    /// the lateral surface is ruled) and two end caps, outward normals.
+    /// the lateral surface is ruled) and two end caps, outward normals;
+    /// @p volume is set to the enclosed volume (m^3).
     std::string skin_stl(const LimbGeometry &limb,
                          const Pose         &frame,
-                         const unsigned int  n)
+                         const unsigned int  n,
+                         double             &volume)
     {
       std::vector<std::array<Eigen::Vector3d, 3>> triangles;
       const double                                L = limb.length;
@@ -91,7 +93,7 @@ namespace softgrasp
         triangles.push_back({{shoulder, a1, a0}});
         triangles.push_back({{elbow, b0, b1}});
       }
-      std::string out(80, '\0');
+      std::string       out(80, '\0');
       const std::string header = "softgrasp limb skin surface (m)";
       out.replace(0, header.size(), header);
       const auto put = [&out](const auto value)
@@ -101,8 +103,10 @@ namespace softgrasp
         out.append(bytes, sizeof(value));
       };
       put(static_cast<std::uint32_t>(triangles.size()));
+      volume = 0;
       for (const auto &t : triangles)
       {
+        volume += t[0].dot(t[1].cross(t[2])) / 6;
         const Eigen::Vector3d normal =
             (t[1] - t[0]).cross(t[2] - t[0]).normalized();
         for (const auto &v : {normal, t[0], t[1], t[2]})
@@ -135,11 +139,14 @@ namespace softgrasp
       throw InputError("Cannot reach the hand's MJCF file '" + hand_file +
                        "' from '" + folder +
                        "'. Fix: keep both on the same file system.");
-    const Pose frame = limb_frame_in_body(limb);
+    const Pose frame  = limb_frame_in_body(limb);
+    double     volume = 0;
     AtomicFile::write(folder + "/mujoco_arm_skin.stl",
-                      skin_stl(limb, frame, facets));
+                      skin_stl(limb, frame, facets, volume));
     std::ostringstream xml;
     xml << std::setprecision(17);
+    // The geom's mass is given: MuJoCo 2.2 infers a mesh's mass from its
+    // equivalent inertia box (3/pi of a cylinder's volume).
     xml << "<!-- Written by softgrasp from the layered limb's geometry (the "
            "finite element limb's skin); see doc/studies.md. -->\n"
         << "<mujoco model=\"arm_grasp\">\n"
@@ -151,14 +158,13 @@ namespace softgrasp
         << "  <asset>\n    <mesh name=\"upper_arm_skin\" "
            "file=\"mujoco_arm_skin.stl\"/>\n  </asset>\n"
         << "  <worldbody>\n"
-        << "    <body name=\"object\" pos=\"0 " << -limb.length / 2
-        << " 0\">\n"
+        << "    <body name=\"object\" pos=\"0 " << -limb.length / 2 << " 0\">\n"
         << "      <joint name=\"shoulder\" type=\"ball\" damping=\""
         << shoulder_damping << "\" stiffness=\"" << shoulder_stiffness
         << "\"/>\n"
         << "      <geom name=\"upper_arm\" type=\"mesh\" "
-           "mesh=\"upper_arm_skin\" density=\""
-        << density
+           "mesh=\"upper_arm_skin\" mass=\""
+        << density * volume
         << "\" condim=\"3\" friction=\"1 0.005 0.0001\" solref=\"0.004 1\" "
            "solimp=\"0.95 0.99 0.001\" rgba=\"0.85 0.65 0.55 1\"/>\n"
         << "    </body>\n  </worldbody>\n</mujoco>\n";

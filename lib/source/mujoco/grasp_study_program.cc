@@ -16,8 +16,8 @@ namespace softgrasp
   namespace
   {
     void read_study_parameters(
-        ParameterHandler                             &prm,
-        const std::string                            &filename,
+        ParameterHandler                              &prm,
+        const std::string                             &filename,
         const std::function<void(ParameterHandler &)> &declare_study)
     {
       GraspParameters::declare_parameters(prm);

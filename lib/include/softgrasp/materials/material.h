@@ -204,8 +204,8 @@ namespace softgrasp
     /// The placement of the frame the direction field is given in.
     dealii::Tensor<2, 3> frame_rotation = dealii::unit_symmetric_tensor<3>();
     dealii::Tensor<1, 3> frame_translation;
-    VolumetricEnergy                volumetric;
-    double                          rho0;
+    VolumetricEnergy     volumetric;
+    double               rho0;
   };
 } // namespace softgrasp
 
