@@ -124,9 +124,11 @@ namespace softgrasp
   }
 
   template <int dim>
-  void CentralDifference<dim>::set_balance_limit(const double limit)
+  void CentralDifference<dim>::set_balance_limit(const double limit,
+                                                 const double active_from)
   {
     balance_limit = limit;
+    balance_from  = active_from;
   }
 
   template <int dim>
@@ -306,7 +308,7 @@ namespace softgrasp
       result = StepResult::not_finite;
     else if (!(smallest_J > 0))
       result = StepResult::inverted;
-    else if (balance_limit > 0 && steps_taken >= 50 &&
+    else if (balance_limit > 0 && steps_taken >= 50 && t >= balance_from &&
              e.balance_error > balance_limit)
       result = StepResult::unbalanced;
     if (result != StepResult::ok)

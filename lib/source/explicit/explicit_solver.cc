@@ -79,8 +79,10 @@ namespace softgrasp
         mass,
         fixed,
         this->solver_parameters.explicit_dynamics.mass_damping);
+    // The balance limit acts after the first 2 % of the run.
     integrator->set_balance_limit(
-        this->solver_parameters.explicit_dynamics.energy_balance_limit);
+        this->solver_parameters.explicit_dynamics.energy_balance_limit,
+        0.02 * this->solver_parameters.time.end_time);
     integrator->prescribe = [this](const double t, VectorType &u)
     { prescribe(t, u); };
     if (explicit_contact)

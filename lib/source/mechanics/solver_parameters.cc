@@ -364,9 +364,12 @@ namespace softgrasp
                       Patterns::Double(0),
                       "Stop the run (writing the last good state) when the "
                       "relative energy balance error exceeds this: the sign "
-                      "of an unstable step. 0 switches the check off (the "
-                      "balance error is still recorded in the history). "
-                      "Unit: 1.");
+                      "of an unstable step; it acts after the first 2 % of "
+                      "the run (before, the energies are too small for a "
+                      "relative measure; unstable steps are caught by the "
+                      "checks for inverted elements and non-finite values). "
+                      "0 switches the check off (the balance error is still "
+                      "recorded in the history). Unit: 1.");
     prm.declare_entry("Force kernel",
                       "vectorized",
                       Patterns::Selection("vectorized|reference"),

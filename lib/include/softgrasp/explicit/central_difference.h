@@ -88,9 +88,15 @@ namespace softgrasp
     void set_constrained_dofs(
         const std::vector<dealii::types::global_dof_index> &dofs);
 
-    /// Refuse steps whose energy balance error exceeds @p limit, from the
-    /// 50th step on (before, the energies may be at round-off level).
-    void set_balance_limit(const double limit);
+    /**
+     * Refuse steps whose energy balance error exceeds @p limit, from the
+     * 50th step and from time @p active_from (s) on: before, the energies
+     * are too small for a relative measure (a first touch of a rigid body
+     * makes it jump), while an unstable step grows exponentially and is
+     * caught by the non-finite and inversion checks, which act from the
+     * first step.
+     */
+    void set_balance_limit(const double limit, const double active_from = 0);
 
     /// Start at time @p t0 from displacement @p u0 and velocity @p v0.
     void
@@ -157,9 +163,10 @@ namespace softgrasp
     dealii::IndexSet                  fixed;
     double                            alpha;
     double                            balance_limit = 0; ///< 0: none
-    unsigned long                     steps_taken   = 0;
-    double                            t = 0, last_dt = 0;
-    VectorType u, v_half, v, a, f, f_ext, f_contact, u_trial, eigenvector;
+    double        balance_from = 0; ///< s, time from which the limit acts
+    unsigned long steps_taken  = 0;
+    double        t = 0, last_dt = 0;
+    VectorType    u, v_half, v, a, f, f_ext, f_contact, u_trial, eigenvector;
     mutable VectorType v_now; ///< velocity() at the current step
     /// The state before the current step (kept for the rollback and the
     /// work over the step; swapped, not reallocated, each step).

@@ -34,6 +34,13 @@ namespace softgrasp
     void set_up_tissue(SolverInputs<3> &inputs,
                        const Pose      &object) const override;
 
+    /// The sliced views (paper's fig. 8 and 9): a vertical slice across
+    /// the arm through the target link, and a slice parallel to the palm
+    /// through the arm's axis at the link, at the equilibrium and the
+    /// indented state.
+    void postprocess(const MechanicsSolver<3> &solver,
+                     const KinematicsData     &phases) override;
+
   private:
     LimbGeometry geometry;
     LimbScene    scene;
