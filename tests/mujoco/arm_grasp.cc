@@ -9,7 +9,12 @@
 //  - finite elements: no penetration beyond 1 micrometre, the link forces
 //    balance the reaction of the humerus (within 5 % of the largest link
 //    force; the rest is inertia of the explicit run), and the grip grows
-//    with the closure (the distal links carry it on this coarse mesh).
+//    with the closure (the distal links carry it on this coarse mesh);
+//  - sliced views: in the slice across the arm the skin under the thumb
+//    moves inward (towards the arm's axis) by more than 0.5 mm, and in the
+//    slice parallel to the palm e_max of skin and fat next to the links
+//    (within 35 mm) is more than 3 times its largest value 60 mm or more
+//    away from them.
 #include "../tests.h"
 
 #include <mujoco/mujoco.h>
@@ -110,4 +115,66 @@ main(int argc, char **argv)
   dealii::deallog << "every distal link presses with more than 1 N; the sum "
                      "of the link normal forces grows with the closure"
                   << std::endl;
+
+  // The sliced views.
+  const auto &views = study.sections();
+  SG_CHECK(views.size() == 2, "a vertical and a horizontal slice");
+  const auto [centre, axis] = study.limb_axis();
+  const auto radial =
+      [&, centre = centre, axis = axis](const dealii::Point<3> &p)
+  {
+    const Eigen::Vector3d d = Eigen::Vector3d(p[0], p[1], p[2]) - centre;
+    return (d - d.dot(axis) * axis).norm();
+  };
+  const auto distance_to_links =
+      [](const dealii::Point<3>                           &p,
+         const std::vector<std::vector<dealii::Point<3>>> &links)
+  {
+    double d = 1e300;
+    for (const auto &outline : links)
+      for (const auto &q : outline)
+        d = std::min(d, p.distance(q));
+    return d;
+  };
+  {
+    const auto &v = views[0];
+    SG_CHECK(!v.links_indented.empty(), "the thumb crosses the vertical slice");
+    double       moved = 0;
+    unsigned int n     = 0;
+    for (const auto &segment : v.section.outline)
+      for (unsigned int k = 0; k < 2; ++k)
+        if (distance_to_links(segment.deformed[k], v.links_indented) < 5e-3)
+        {
+          moved += radial(segment.deformed[k]) - radial(segment.reference[k]);
+          ++n;
+        }
+    SG_CHECK(n > 0 && moved / n < -0.5e-3,
+             "the skin under the thumb moves inward");
+    dealii::deallog << "vertical slice: the skin under the thumb moves "
+                       "inward by more than 0.5 mm"
+                    << std::endl;
+  }
+  {
+    // e_max of skin and fat near the links (within 35 mm: the cells next
+    // to them on this coarse mesh) against far from them (beyond 60 mm).
+    const auto &v    = views[1];
+    double      near = 0, far = 0;
+    for (const auto &p : v.section.polygons)
+      if (p.material == 1 || p.material == 2)
+      {
+        dealii::Point<3> mean;
+        for (const auto &x : p.deformed)
+          mean += x / double(p.deformed.size());
+        const double d = distance_to_links(mean, v.links_indented);
+        if (d < 35e-3)
+          near = std::max(near, p.e_max);
+        else if (d > 60e-3)
+          far = std::max(far, p.e_max);
+      }
+    SG_CHECK(near > 3 * far && near > 0.02,
+             "e_max of skin and fat peaks next to the finger links");
+    dealii::deallog << "horizontal slice: e_max of skin and fat next to the "
+                       "links is more than 3 times that far from them"
+                    << std::endl;
+  }
 }

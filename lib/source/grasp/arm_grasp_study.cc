@@ -63,8 +63,6 @@ namespace softgrasp
   void ArmGraspStudy::postprocess(const MechanicsSolver<3> &solver,
                                   const KinematicsData     &phases)
   {
-    if (!parameters.pictures)
-      return;
     const auto        &records = solver.contact_force_history();
     const double       t_end   = records.empty() ? 0 : records.back().time;
     const RigidBodySet bodies  = rigid_bodies_from(phases);
@@ -73,11 +71,10 @@ namespace softgrasp
     for (const auto &b : phases.bodies)
       if (b.name == parameters.object_body)
         object = &b;
-    const Pose            frame = LimbScene::limb_frame_in_body(geometry);
-    const Eigen::Vector3d axis  = object->poses.front().orientation *
-                                 (frame.orientation * Eigen::Vector3d::UnitX());
-    const Eigen::Vector3d centre =
-        object->poses.front().to_world(frame.position);
+    const Pose frame = LimbScene::limb_frame_in_body(geometry);
+    axis             = object->poses.front().orientation *
+           (frame.orientation * Eigen::Vector3d::UnitX());
+    centre                  = object->poses.front().to_world(frame.position);
     Eigen::Vector3d through = centre;
     for (unsigned int b = 0; b < bodies.bodies().size(); ++b)
       for (unsigned int g = 0; g < bodies.bodies()[b].geoms().size(); ++g)
@@ -113,13 +110,15 @@ namespace softgrasp
           SectionView::geom_outlines(bodies, 0, origin, tensor(n), v.e1, v.e2);
       v.links_indented = SectionView::geom_outlines(
           bodies, t_end, origin, tensor(n), v.e1, v.e2);
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
+      if (parameters.pictures && Utilities::MPI::this_mpi_process(comm) == 0)
         write_section_pictures(v,
                                names,
                                solver.parameters().output.directory,
                                solver.parameters().output.base_name,
                                std::cout);
+      views.push_back(std::move(v));
     };
+    views.clear();
     view("vertical",
          "vertical slice across the arm through " + parameters.target_link,
          through,

@@ -3,6 +3,7 @@
 
 #include <softgrasp/grasp/indentation_study.h>
 #include <softgrasp/grasp/limb_scene.h>
+#include <softgrasp/grasp/section_pictures.h>
 #include <softgrasp/meshes/layered_limb.h>
 
 namespace softgrasp
@@ -30,6 +31,20 @@ namespace softgrasp
       return geometry;
     }
 
+    /// The sliced views of the last run (complete on rank 0): vertical,
+    /// then horizontal.
+    const std::vector<SectionView> &sections() const
+    {
+      return views;
+    }
+
+    /// The limb's axis at the equilibrium state: a point (its centre) and
+    /// the unit direction from the shoulder to the elbow (world, m).
+    std::pair<Eigen::Vector3d, Eigen::Vector3d> limb_axis() const
+    {
+      return {centre, axis};
+    }
+
   protected:
     void set_up_tissue(SolverInputs<3> &inputs,
                        const Pose      &object) const override;
@@ -42,8 +57,11 @@ namespace softgrasp
                      const KinematicsData     &phases) override;
 
   private:
-    LimbGeometry geometry;
-    LimbScene    scene;
+    LimbGeometry             geometry;
+    LimbScene                scene;
+    std::vector<SectionView> views;
+    Eigen::Vector3d          centre = Eigen::Vector3d::Zero();
+    Eigen::Vector3d          axis   = Eigen::Vector3d::UnitX();
   };
 } // namespace softgrasp
 
