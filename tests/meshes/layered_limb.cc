@@ -61,6 +61,30 @@ namespace
     }
   }
 
+  /// The largest |measured - exact| / exact over the ids of @p exact.
+  double largest_relative_error(const std::map<unsigned int, double> &measured,
+                                const std::map<unsigned int, double> &exact)
+  {
+    double worst = 0;
+    for (const auto &[id, value] : exact)
+    {
+      const auto it = measured.find(id);
+      worst         = std::max(
+          worst,
+          it == measured.end() ? 1.0 : std::abs(it->second - value) / value);
+    }
+    return worst;
+  }
+
+  /// The coarse mesh of @p factory, refined @p refinement times.
+  void build(const MeshFactory<3> &factory,
+             const unsigned int    refinement,
+             Triangulation<3>     &tria)
+  {
+    factory.create_coarse_mesh(tria);
+    tria.refine_global(refinement);
+  }
+
   void straight_circular_limb()
   {
     deallog << "Straight circular limb, rigid bone" << std::endl;
@@ -90,15 +114,11 @@ namespace
     for (unsigned int refinement = 0; refinement < 3; ++refinement)
     {
       Triangulation<3> tria;
-      factory.create_coarse_mesh(tria);
-      tria.refine_global(refinement);
+      build(factory, refinement, tria);
       std::map<unsigned int, double> volume, area;
       measure(tria, volume, area);
-      double worst = 0;
-      for (const auto &[id, v] : exact)
-        worst = std::max(worst, std::abs(volume[id] - v) / v);
-      for (const auto &[id, a] : exact_area)
-        worst = std::max(worst, std::abs(area[id] - a) / a);
+      const double worst = std::max(largest_relative_error(volume, exact),
+                                    largest_relative_error(area, exact_area));
       SG_CHECK(volume.size() == 4 && area.size() == 4,
                "four tissues and four boundary ids");
       deallog << "  refinement " << refinement << ": " << tria.n_active_cells()
@@ -163,13 +183,10 @@ namespace
     for (unsigned int refinement = 0; refinement < 3; ++refinement)
     {
       Triangulation<3> tria;
-      factory.create_coarse_mesh(tria);
-      tria.refine_global(refinement);
+      build(factory, refinement, tria);
       std::map<unsigned int, double> volume, area;
       measure(tria, volume, area);
-      double worst = 0;
-      for (const auto &[id, v] : exact)
-        worst = std::max(worst, std::abs(volume[id] - v) / v);
+      const double           worst = largest_relative_error(volume, exact);
       std::set<unsigned int> ids;
       for (const auto &[id, a] : area)
         ids.insert(id);

@@ -135,11 +135,16 @@ namespace softgrasp
     inputs.add_resume_setting("Study/Placement",
                               describe(inputs.mesh.placement));
 
-    std::vector<std::string> labels;
-    const auto              &bodies = inputs.bodies;
+    // The target link as (body, geom) indices into the force records.
+    std::vector<std::string>                   labels;
+    std::vector<std::pair<unsigned, unsigned>> indices;
+    const auto                                &bodies = inputs.bodies;
     for (unsigned int b = 0; b < bodies.bodies().size(); ++b)
       for (unsigned int g = 0; g < bodies.bodies()[b].geoms().size(); ++g)
+      {
         labels.push_back(bodies.geom_label(b, g));
+        indices.emplace_back(b, g);
+      }
     const auto target =
         std::find(labels.begin(), labels.end(), parameters.target_link);
     if (!parameters.target_link.empty() && target == labels.end())
@@ -153,13 +158,13 @@ namespace softgrasp
     auto      &solver         = *solver_pointer;
     if (parameters.target_force > 0)
     {
-      const unsigned int index = target - labels.begin();
+      const auto [b, g] = indices[target - labels.begin()];
       solver.set_stop_criterion(
-          [&solver, index, this]()
+          [&solver, b = b, g = g, this]()
           {
-            const auto links = link_force_histories(
-                solver.rigid_bodies(), {solver.contact_force_history().back()});
-            return links[index].normal.back() >= parameters.target_force;
+            const auto &latest = solver.contact_force_history().back();
+            return latest.forces[b][g].normal_force() >=
+                   parameters.target_force;
           });
     }
     solver.run();
