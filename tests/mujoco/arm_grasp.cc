@@ -14,7 +14,13 @@
 //    moves inward (towards the arm's axis) by more than 0.5 mm, and in the
 //    slice parallel to the palm e_max of skin and fat next to the links
 //    (within 35 mm) is more than 3 times its largest value 60 mm or more
-//    away from them.
+//    away from them;
+//  - injury table: the largest compression (e_min) of skin and fat lies
+//    within 10 mm of a finger link (their largest stretch may lie between
+//    the fingers), the largest contact pressure on a link's surface (within
+//    0.1 mm), the skin area above the capillary closing pressure is part
+//    of the contact area, and more tissue is compressed beyond 0.40 than
+//    beyond 0.65.
 #include "../tests.h"
 
 #include <mujoco/mujoco.h>
@@ -175,6 +181,30 @@ main(int argc, char **argv)
              "e_max of skin and fat peaks next to the finger links");
     dealii::deallog << "horizontal slice: e_max of skin and fat next to the "
                        "links is more than 3 times that far from them"
+                    << std::endl;
+  }
+
+  // The injury table.
+  {
+    const auto &injury = study.injury();
+    SG_CHECK(injury.tissues().size() == 3,
+             "skin, fat, muscle (no fascia, a rigid bone)");
+    for (const auto &t : injury.tissues())
+    {
+      if (t.id == 1 || t.id == 2)
+        SG_CHECK(t.e_min.geom_distance < 10e-3,
+                 "e_min of " + t.name + " next to a link (" +
+                     t.e_min.nearest_geom + ")");
+      SG_CHECK(t.volume_compressed[1] <= t.volume_compressed[0],
+               "more tissue compressed beyond 0.40 than beyond 0.65");
+    }
+    const auto &p = injury.surface();
+    SG_CHECK(p.maximum.value > 0 && std::abs(p.maximum.geom_distance) < 1e-4,
+             "the largest pressure is on a link's surface");
+    SG_CHECK(p.area_above[0] > 0 && p.area_above[0] <= p.contact_area,
+             "skin area above 4.3 kPa is part of the contact area");
+    dealii::deallog << "injury table: e_min of skin and fat next to the "
+                       "links; the largest pressure on a link's surface"
                     << std::endl;
   }
 }

@@ -3,7 +3,8 @@
 //   x = closest + distance * normal,  |normal| = 1,
 //   the closest point lies on the surface (its distance is 0),
 // to round-off; plus analytic values (inside, outside, caps, rims, the
-// degenerate centre of an ellipsoid) and bad geom definitions.
+// degenerate centre of an ellipsoid), the registry of shape types, every
+// type's wire frame lying on its surface, and bad geom definitions.
 #include "../tests.h"
 
 #include <random>
@@ -55,6 +56,27 @@ main()
     }
     SG_CHECK(worst < 1e-13, type + ": exact signed distance field");
     dealii::deallog << type << ": signed distance field exact on 2000 points"
+                    << std::endl;
+  }
+
+  // Every shape type is registered under its MuJoCo name, and its wire
+  // frame (what the pictures draw) lies on its surface.
+  SG_CHECK(ShapeRegistry::names_separated_by(", ") ==
+               "box, capsule, cylinder, ellipsoid, mesh, plane, sphere",
+           "the registered shape types");
+  for (const auto &[type, size] : geoms)
+  {
+    const auto   shape = create_shape(type, size, "drawn " + type);
+    double       worst = 0;
+    unsigned int n     = 0;
+    for (const auto &line : shape->wireframe())
+      for (const auto &x : line)
+      {
+        worst = std::max(worst, std::abs(shape->query(x).distance));
+        ++n;
+      }
+    SG_CHECK(n > 0 && worst < 1e-15, type + ": wire frame on the surface");
+    dealii::deallog << type << ": " << n << " wire frame points on the surface"
                     << std::endl;
   }
 

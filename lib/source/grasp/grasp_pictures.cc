@@ -7,86 +7,11 @@
 #include <softgrasp/base/gnuplot.h>
 #include <softgrasp/grasp/grasp_pictures.h>
 #include <softgrasp/postprocess/principal_strains.h>
+#include <softgrasp/rigid/rigid_body_set.h>
 
 namespace softgrasp
 {
   using namespace dealii;
-
-  namespace
-  {
-    /// Wire frame of a capsule, cylinder or sphere (rings and meridians).
-    void write_geom(std::ostream         &out,
-                    const std::string    &type,
-                    const Eigen::Vector3d size,
-                    const Pose           &pose)
-    {
-      const double r = size[0];
-      const double h = (type == "sphere") ? 0 : size[1];
-      // the profile (z, radius) along the local z axis
-      std::vector<std::pair<double, double>> profile;
-      const auto cap = [&](const double z0, const int first, const int last)
-      {
-        for (int k = first; k <= last; ++k)
-        {
-          const double phi = M_PI / 2 * k / 8.0;
-          profile.emplace_back(z0 + r * std::sin(phi), r * std::cos(phi));
-        }
-      };
-      if (type == "sphere")
-        cap(0, -8, 8);
-      else
-      {
-        if (type == "capsule")
-          cap(-h, -8, -1);
-        for (int k = 0; k <= 4; ++k)
-          profile.emplace_back(-h + 2 * h * k / 4.0, r);
-        if (type == "capsule")
-          cap(h, 1, 8);
-      }
-      const auto point =
-          [&](const double angle, const std::pair<double, double> &zr)
-      {
-        const Eigen::Vector3d x =
-            pose.to_world(Eigen::Vector3d(zr.second * std::cos(angle),
-                                          zr.second * std::sin(angle),
-                                          zr.first));
-        out << 1e3 * x[0] << ' ' << 1e3 * x[1] << ' ' << 1e3 * x[2] << '\n';
-      };
-      for (const auto &zr : profile) // rings
-      {
-        for (unsigned int i = 0; i <= 24; ++i)
-          point(2 * M_PI * i / 24, zr);
-        out << "\n\n";
-      }
-      for (unsigned int i = 0; i < 8; ++i) // meridians
-      {
-        for (const auto &zr : profile)
-          point(2 * M_PI * i / 8, zr);
-        out << "\n\n";
-      }
-    }
-
-    void
-    write_box(std::ostream &out, const Eigen::Vector3d size, const Pose &pose)
-    {
-      for (unsigned int axis = 0; axis < 3; ++axis)
-        for (int a = -1; a <= 1; a += 2)
-          for (int b = -1; b <= 1; b += 2)
-          {
-            for (int c = -1; c <= 1; c += 2)
-            {
-              Eigen::Vector3d local;
-              local[axis]             = c * size[axis];
-              local[(axis + 1) % 3]   = a * size[(axis + 1) % 3];
-              local[(axis + 2) % 3]   = b * size[(axis + 2) % 3];
-              const Eigen::Vector3d x = pose.to_world(local);
-              out << 1e3 * x[0] << ' ' << 1e3 * x[1] << ' ' << 1e3 * x[2]
-                  << '\n';
-            }
-            out << "\n\n";
-          }
-    }
-  } // namespace
 
   void write_grasp_picture(const SolidSystem<3>            &system,
                            const KinematicsData            &kinematics,
@@ -168,30 +93,31 @@ namespace softgrasp
     {
       std::ofstream out(directory + "/" + base + "_geoms.dat");
       out << "# link geoms at t = " << time << " s: x y z (mm)\n";
-      // the pose at the time: interpolate the recorded samples
-      for (const auto &body : kinematics.bodies)
-      {
-        if (body.geoms.empty())
-          continue;
-        const PoseTrajectory trajectory(kinematics.time, body.poses, body.name);
-        const Pose           pose = trajectory.pose(time);
-        for (const auto &geom : body.geoms)
+      // every geom's wire frame at its pose at the time
+      const RigidBodySet bodies = rigid_bodies_from(kinematics);
+      for (const auto &body : bodies.bodies())
+        for (unsigned int g = 0; g < body.geoms().size(); ++g)
         {
-          if (geom.type == "box")
-            write_box(out, geom.size, pose * geom.local_pose);
-          else if (geom.type == "capsule" || geom.type == "cylinder" ||
-                   geom.type == "sphere")
-            write_geom(out, geom.type, geom.size, pose * geom.local_pose);
+          const Pose pose = body.geom_pose(g, time);
+          for (const auto &line : body.geoms()[g].shape->wireframe())
+          {
+            for (const auto &local : line)
+            {
+              const Eigen::Vector3d x = pose.to_world(local);
+              out << 1e3 * x[0] << ' ' << 1e3 * x[1] << ' ' << 1e3 * x[2]
+                  << '\n';
+            }
+            out << "\n\n";
+          }
         }
-      }
     }
     {
       std::ofstream gp(directory + "/" + base + "_picture.gnuplot");
       gp << "set terminal pngcairo size 1100,900 noenhanced\n"
          << "set output '" << AtomicFile::temporary_name(base + "_picture.png")
          << "'\n"
-         << "set title 'Indented body coloured by e_max (largest principal "
-            "Green-Lagrange strain), finger links at t = "
+         << "set title 'Indented body coloured by e_max = lambda_max - 1 "
+            "(largest principal strain), finger links at t = "
          << time << " s'\n"
          << "set view 70, 30\nset view equal xyz\nset xyplane 0\n"
          << "set xlabel 'x (mm)'\nset ylabel 'y (mm)'\nset zlabel 'z (mm)'\n"

@@ -58,6 +58,7 @@ namespace softgrasp
                       Patterns::Bool(),
                       "Write the PNG picture of the indented body and the "
                       "PNG force plot (needs gnuplot).");
+    InjuryThresholds::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -74,6 +75,7 @@ namespace softgrasp
     target_link  = Utilities::trim(prm.get("Target link"));
     target_force = section.get_positive("Target normal force", "N", true);
     pictures     = prm.get_bool("Pictures");
+    injury.parse_parameters(prm, "Indentation study");
     prm.leave_subsection();
     if (target_force > 0 && target_link.empty())
       throw InputError("'Indentation study/Target normal force' is set but "

@@ -7,6 +7,7 @@
 #include <softgrasp/grasp/grasp_pictures.h>
 #include <softgrasp/grasp/indentation_study.h>
 #include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/rigid/rigid_body_set.h>
 #include <sstream>
 
 namespace softgrasp
@@ -84,6 +85,26 @@ namespace softgrasp
   void IndentationStudy::postprocess(const MechanicsSolver<3> &,
                                      const KinematicsData &)
   {
+  }
+
+  void IndentationStudy::assess_injury(const MechanicsSolver<3> &solver)
+  {
+    const auto  &records = solver.contact_force_history();
+    const double time    = records.empty() ? 0 : records.back().time;
+    injury_assessment.compute(solver.system(),
+                              solver.materials(),
+                              solver.contact(),
+                              solver.contact_output(),
+                              solver.rigid_bodies(),
+                              time,
+                              parameters.injury);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    const auto       &output = solver.parameters().output;
+    const std::string base   = output.directory + "/" + output.base_name;
+    injury_assessment.write_csv(base + "_injury.csv",
+                                base + "_skin_pressure.csv");
+    injury_assessment.print(std::cout);
   }
 
   namespace
@@ -172,6 +193,7 @@ namespace softgrasp
                                     solver.contact_force_history());
     summarise(solver, cut);
     write_link_table(solver, cut);
+    assess_injury(solver);
     postprocess(solver, cut);
   }
 } // namespace softgrasp

@@ -472,6 +472,12 @@ namespace softgrasp
   }
 
   template <int dim>
+  const RigidBodySet &MechanicsSolver<dim>::rigid_bodies() const
+  {
+    return bodies;
+  }
+
+  template <int dim>
   const ContactSurface<dim> *MechanicsSolver<dim>::contact() const
   {
     return contact_surface.get();

@@ -1,6 +1,13 @@
 #include <fstream>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/mujoco/mujoco_model.h>
+#include <softgrasp/rigid/box_shape.h>
+#include <softgrasp/rigid/capsule_shape.h>
+#include <softgrasp/rigid/cylinder_shape.h>
+#include <softgrasp/rigid/ellipsoid_shape.h>
+#include <softgrasp/rigid/plane_shape.h>
+#include <softgrasp/rigid/sphere_shape.h>
+#include <softgrasp/rigid/triangle_mesh_shape.h>
 
 namespace softgrasp
 {
@@ -123,19 +130,19 @@ namespace softgrasp
     switch (type)
     {
     case mjGEOM_PLANE:
-      return "plane";
+      return PlaneShape::type_name;
     case mjGEOM_SPHERE:
-      return "sphere";
+      return SphereShape::type_name;
     case mjGEOM_CAPSULE:
-      return "capsule";
+      return CapsuleShape::type_name;
     case mjGEOM_ELLIPSOID:
-      return "ellipsoid";
+      return EllipsoidShape::type_name;
     case mjGEOM_CYLINDER:
-      return "cylinder";
+      return CylinderShape::type_name;
     case mjGEOM_BOX:
-      return "box";
+      return BoxShape::type_name;
     case mjGEOM_MESH:
-      return "mesh";
+      return TriangleMeshShape::type_name;
     default:
       return "hfield";
     }

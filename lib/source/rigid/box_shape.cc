@@ -37,6 +37,35 @@ namespace softgrasp
 
   std::string BoxShape::type() const
   {
-    return "box";
+    return type_name;
   }
+
+  std::unique_ptr<BoxShape> BoxShape::create(const ShapeSpec &spec)
+  {
+    spec.require_positive(3, "three half-sizes");
+    return std::make_unique<BoxShape>(spec.size);
+  }
+
+  std::vector<std::vector<Eigen::Vector3d>> BoxShape::wireframe() const
+  {
+    // the 12 edges: along each axis d, four edges at the corners of the
+    // other two
+    std::vector<std::vector<Eigen::Vector3d>> lines;
+    for (unsigned int d = 0; d < 3; ++d)
+      for (const double s1 : {-1.0, 1.0})
+        for (const double s2 : {-1.0, 1.0})
+        {
+          Eigen::Vector3d a;
+          a[d]              = -half[d];
+          a[(d + 1) % 3]    = s1 * half[(d + 1) % 3];
+          a[(d + 2) % 3]    = s2 * half[(d + 2) % 3];
+          Eigen::Vector3d b = a;
+          b[d]              = half[d];
+          lines.push_back({a, b});
+        }
+    return lines;
+  }
+
+  SOFTGRASP_REGISTER_SHAPE(
+      BoxShape, "a box with half-sizes size[0..2] along the local axes")
 } // namespace softgrasp

@@ -30,6 +30,34 @@ namespace softgrasp
 
   std::string CapsuleShape::type() const
   {
-    return "capsule";
+    return type_name;
   }
+
+  std::unique_ptr<CapsuleShape> CapsuleShape::create(const ShapeSpec &spec)
+  {
+    spec.require_positive(2, "(radius, half-length)");
+    return std::make_unique<CapsuleShape>(spec.size[0], spec.size[1]);
+  }
+
+  std::vector<std::vector<Eigen::Vector3d>> CapsuleShape::wireframe() const
+  {
+    const Eigen::Vector3d x   = radius * Eigen::Vector3d::UnitX(),
+                          y   = radius * Eigen::Vector3d::UnitY(),
+                          z   = radius * Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d top = half_length * Eigen::Vector3d::UnitZ();
+    std::vector<std::vector<Eigen::Vector3d>> lines = {arc(top, x, y),
+                                                       arc(-top, x, y)};
+    for (const Eigen::Vector3d &r : {x, y})
+    {
+      lines.push_back({-top + r, top + r});
+      lines.push_back({-top - r, top - r});
+      lines.push_back(arc(top, r, z, 0, M_PI, 16));
+      lines.push_back(arc(-top, r, -z, 0, M_PI, 16));
+    }
+    return lines;
+  }
+
+  SOFTGRASP_REGISTER_SHAPE(CapsuleShape,
+                           "a cylinder of radius size[0] and half-length "
+                           "size[1] along local z with hemispherical caps")
 } // namespace softgrasp

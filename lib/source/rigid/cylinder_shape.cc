@@ -51,6 +51,29 @@ namespace softgrasp
 
   std::string CylinderShape::type() const
   {
-    return "cylinder";
+    return type_name;
   }
+
+  std::unique_ptr<CylinderShape> CylinderShape::create(const ShapeSpec &spec)
+  {
+    spec.require_positive(2, "(radius, half-height)");
+    return std::make_unique<CylinderShape>(spec.size[0], spec.size[1]);
+  }
+
+  std::vector<std::vector<Eigen::Vector3d>> CylinderShape::wireframe() const
+  {
+    const Eigen::Vector3d x   = radius * Eigen::Vector3d::UnitX(),
+                          y   = radius * Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d top = half_height * Eigen::Vector3d::UnitZ();
+    std::vector<std::vector<Eigen::Vector3d>> lines = {arc(top, x, y),
+                                                       arc(-top, x, y)};
+    for (const Eigen::Vector3d &r :
+         {x, y, Eigen::Vector3d(-x), Eigen::Vector3d(-y)})
+      lines.push_back({-top + r, top + r});
+    return lines;
+  }
+
+  SOFTGRASP_REGISTER_SHAPE(
+      CylinderShape,
+      "a cylinder of radius size[0] and half-height size[1] along local z")
 } // namespace softgrasp

@@ -94,6 +94,24 @@ namespace softgrasp
 
   std::string EllipsoidShape::type() const
   {
-    return "ellipsoid";
+    return type_name;
   }
+
+  std::unique_ptr<EllipsoidShape> EllipsoidShape::create(const ShapeSpec &spec)
+  {
+    spec.require_positive(3, "three radii");
+    return std::make_unique<EllipsoidShape>(spec.size);
+  }
+
+  std::vector<std::vector<Eigen::Vector3d>> EllipsoidShape::wireframe() const
+  {
+    const Eigen::Vector3d o = Eigen::Vector3d::Zero();
+    const Eigen::Vector3d x = radii[0] * Eigen::Vector3d::UnitX(),
+                          y = radii[1] * Eigen::Vector3d::UnitY(),
+                          z = radii[2] * Eigen::Vector3d::UnitZ();
+    return {arc(o, x, y), arc(o, y, z), arc(o, z, x)};
+  }
+
+  SOFTGRASP_REGISTER_SHAPE(
+      EllipsoidShape, "an ellipsoid with radii size[0..2] along the local axes")
 } // namespace softgrasp

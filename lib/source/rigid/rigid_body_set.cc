@@ -3,7 +3,7 @@
 #include <fstream>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/rigid/rigid_body_set.h>
-#include <softgrasp/rigid/triangle_mesh_shape.h>
+#include <softgrasp/rigid/sphere_shape.h>
 #include <sstream>
 
 namespace softgrasp
@@ -77,14 +77,14 @@ namespace softgrasp
 
     void declare_geom(ParameterHandler &prm)
     {
+      std::string types;
+      for (const auto &[name, entry] : ShapeRegistry::all())
+        types += "\n  " + name + ": " + entry.description + ".";
       prm.declare_entry(
           "Type",
-          "sphere",
-          Patterns::Selection(
-              "sphere|capsule|cylinder|box|ellipsoid|plane|mesh"),
-          "MuJoCo geom type. The axis of capsules and cylinders and the "
-          "normal of a plane are the local z axis; a mesh is a closed "
-          "triangle mesh read from 'Mesh file'.");
+          SphereShape::type_name,
+          Patterns::Selection(ShapeRegistry::names_separated_by("|")),
+          "MuJoCo geom type (sizes in 'Size', m):" + types);
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
@@ -221,21 +221,13 @@ namespace softgrasp
         local.orientation =
             quaternion_in(prm.get("Orientation"),
                           "Parameter '" + geom_path + "/Orientation'");
-        if (prm.get("Type") == "mesh")
-        {
-          const std::string file = prm.get("Mesh file");
-          if (file.empty())
-            throw InputError("Geom '" + geom_path +
-                             "' has Type = mesh but no 'Mesh file'. Fix: "
-                             "name an STL or OBJ file.");
-          body.add_geom(
-              geom,
-              TriangleMeshShape::read(file, prm.get_double("Mesh scale")),
-              local);
-        }
-        else
-          body.add_geom(
-              geom, create_shape(prm.get("Type"), size3, geom), local);
+        ShapeSpec spec;
+        spec.type       = prm.get("Type");
+        spec.size       = size3;
+        spec.geom_name  = geom_path;
+        spec.mesh_file  = prm.get("Mesh file");
+        spec.mesh_scale = prm.get_double("Mesh scale");
+        body.add_geom(geom, create_shape(spec), local);
         const std::string normal_text = prm.get("Reference normal");
         if (normal_text.empty())
           body_normals.emplace_back();

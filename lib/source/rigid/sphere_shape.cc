@@ -24,6 +24,24 @@ namespace softgrasp
 
   std::string SphereShape::type() const
   {
-    return "sphere";
+    return type_name;
   }
+
+  std::unique_ptr<SphereShape> SphereShape::create(const ShapeSpec &spec)
+  {
+    spec.require_positive(1, "(radius)");
+    return std::make_unique<SphereShape>(spec.size[0]);
+  }
+
+  std::vector<std::vector<Eigen::Vector3d>> SphereShape::wireframe() const
+  {
+    const Eigen::Vector3d o = Eigen::Vector3d::Zero();
+    const Eigen::Vector3d x = radius * Eigen::Vector3d::UnitX(),
+                          y = radius * Eigen::Vector3d::UnitY(),
+                          z = radius * Eigen::Vector3d::UnitZ();
+    return {arc(o, x, y), arc(o, y, z), arc(o, z, x)};
+  }
+
+  SOFTGRASP_REGISTER_SHAPE(SphereShape,
+                           "a sphere of radius size[0] about the geom origin")
 } // namespace softgrasp

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/rigid/triangle_mesh_shape.h>
 #include <sstream>
@@ -446,11 +447,41 @@ namespace softgrasp
 
   std::string TriangleMeshShape::type() const
   {
-    return "mesh";
+    return type_name;
   }
 
   unsigned int TriangleMeshShape::n_triangles() const
   {
     return triangles.size();
   }
+
+  std::unique_ptr<TriangleMeshShape>
+  TriangleMeshShape::create(const ShapeSpec &spec)
+  {
+    if (spec.mesh_file.empty())
+      throw InputError("Geom '" + spec.geom_name +
+                       "' has type mesh but names no mesh file. Fix: set "
+                       "its 'Mesh file' (an STL or OBJ file of a closed "
+                       "surface).");
+    return read(spec.mesh_file, spec.mesh_scale);
+  }
+
+  std::vector<std::vector<Eigen::Vector3d>> TriangleMeshShape::wireframe() const
+  {
+    // every edge once
+    std::vector<std::vector<Eigen::Vector3d>>       lines;
+    std::set<std::pair<unsigned int, unsigned int>> edges;
+    for (const auto &t : triangles)
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        const unsigned int a = t[k], b = t[(k + 1) % 3];
+        if (edges.insert({std::min(a, b), std::max(a, b)}).second)
+          lines.push_back({vertices[a], vertices[b]});
+      }
+    return lines;
+  }
+
+  SOFTGRASP_REGISTER_SHAPE(
+      TriangleMeshShape,
+      "a closed triangle surface read from the geom's mesh file (STL or OBJ)")
 } // namespace softgrasp

@@ -7,6 +7,7 @@
 #include <softgrasp/io/history_writer.h>
 #include <softgrasp/io/kinematics_file.h>
 #include <softgrasp/mechanics/solver_inputs.h>
+#include <softgrasp/postprocess/tissue_injury.h>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@ namespace softgrasp
     std::string              target_link;      ///< body/geom; empty: none
     double                   target_force = 0; ///< N; 0: none
     bool                     pictures     = true;
+    InjuryThresholds         injury; ///< 'Injury assessment'
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
@@ -61,7 +63,9 @@ namespace softgrasp
    * Afterwards it writes <base>_links.csv: per step the closure (rad) and,
    * per link, the finite element normal, lateral and friction-only force
    * next to the rigid simulator's normal and lateral force at the same
-   * time; and (with gnuplot) <base>_forces.png and <base>_picture.png.
+   * time; and (with gnuplot) <base>_forces.png and <base>_picture.png;
+   * and the per-tissue injury assessment of the final state
+   * (TissueInjury: <base>_injury.csv, <base>_skin_pressure.csv).
    * A study adds its own output in postprocess(). SI units throughout.
    */
   class IndentationStudy
@@ -113,6 +117,12 @@ namespace softgrasp
     /// The finite element force history of every link of the last run.
     const std::vector<LinkForceHistory> &link_forces() const;
 
+    /// The injury assessment of the last run's final state.
+    const TissueInjury<3> &injury() const
+    {
+      return injury_assessment;
+    }
+
   protected:
     /**
      * Put the tissue into @p inputs for a run that starts at the recorded
@@ -141,11 +151,14 @@ namespace softgrasp
                    const KinematicsData     &phases);
     void write_link_table(const MechanicsSolver<3> &solver,
                           const KinematicsData     &phases);
+    /// Assess the final state (all ranks); write and print it on rank 0.
+    void assess_injury(const MechanicsSolver<3> &solver);
 
     double                        extra_angle = 0;
     Summary                       result;
     HistoryWriter                 table;
     std::vector<LinkForceHistory> fe_links;
+    TissueInjury<3>               injury_assessment;
   };
 } // namespace softgrasp
 

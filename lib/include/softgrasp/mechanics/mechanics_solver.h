@@ -78,7 +78,8 @@ namespace softgrasp
     const MaterialLibrary  &materials() const;
     const SolverParameters &parameters() const;
     /// The rigid bodies; add bodies or reference normals before run().
-    RigidBodySet &rigid_bodies();
+    RigidBodySet       &rigid_bodies();
+    const RigidBodySet &rigid_bodies() const;
     /// The contact, if the run has one (after run() started).
     const ContactSurface<dim> *contact() const;
     const ContactOutput<dim>  *contact_output() const;

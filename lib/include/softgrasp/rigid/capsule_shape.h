@@ -16,6 +16,12 @@ namespace softgrasp
     ShapeQuery  query(const Eigen::Vector3d &x) const override;
     double      bounding_radius() const override;
     std::string type() const override;
+    std::vector<std::vector<Eigen::Vector3d>> wireframe() const override;
+
+    /// The MuJoCo geom type name, spelled only here.
+    static constexpr const char *type_name = "capsule";
+    /// Build from a geom's spec (sizes checked).
+    static std::unique_ptr<CapsuleShape> create(const ShapeSpec &spec);
 
   private:
     double radius, half_length;

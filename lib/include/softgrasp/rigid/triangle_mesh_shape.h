@@ -38,6 +38,12 @@ namespace softgrasp
     ShapeQuery  query(const Eigen::Vector3d &x) const override;
     double      bounding_radius() const override;
     std::string type() const override;
+    std::vector<std::vector<Eigen::Vector3d>> wireframe() const override;
+
+    /// The MuJoCo geom type name, spelled only here.
+    static constexpr const char *type_name = "mesh";
+    /// Build from a geom's spec (sizes checked).
+    static std::unique_ptr<TriangleMeshShape> create(const ShapeSpec &spec);
 
     unsigned int n_triangles() const;
 
