@@ -258,6 +258,7 @@ namespace softgrasp
                                    e0.kinetic + std::abs(e0.internal),
                                    1e-300});
     e.balance_error    = std::abs(imbalance) / scale;
+    e.created          = std::max(imbalance, 0.0) / scale;
     return true;
   }
 
@@ -309,7 +310,7 @@ namespace softgrasp
     else if (!(smallest_J > 0))
       result = StepResult::inverted;
     else if (balance_limit > 0 && steps_taken >= 50 && t >= balance_from &&
-             e.balance_error > balance_limit)
+             e.created > balance_limit)
       result = StepResult::unbalanced;
     if (result != StepResult::ok)
     {

@@ -438,8 +438,8 @@ namespace softgrasp
                "mesh where it is compressed most, or add 'Explicit "
                "dynamics/Mass damping'.");
         case Result::unbalanced:
-          fail("the energy balance error would exceed 'Explicit "
-               "dynamics/Energy balance limit' = " +
+          fail("the energy the integration creates would exceed "
+               "'Explicit dynamics/Energy balance limit' = " +
                    std::to_string(ep.energy_balance_limit) +
                    ": the integration is unstable",
                "reduce 'Explicit dynamics/Safety factor' or 'Fixed time "

@@ -363,8 +363,11 @@ namespace softgrasp
                       "0.05",
                       Patterns::Double(0),
                       "Stop the run (writing the last good state) when the "
-                      "relative energy balance error exceeds this: the sign "
-                      "of an unstable step; it acts after the first 2 % of "
+                      "integration creates more energy than this, relative "
+                      "to the largest energy term: the sign of an unstable "
+                      "step (energy lost, e.g. by impact on a rigid body, "
+                      "is dissipation and does not stop it); it acts after "
+                      "the first 2 % of "
                       "the run (before, the energies are too small for a "
                       "relative measure; unstable steps are caught by the "
                       "checks for inverted elements and non-finite values). "

@@ -44,6 +44,9 @@ namespace softgrasp
       double kinetic = 0, internal = 0, external_work = 0, support_work = 0,
              contact_work = 0, damping = 0;
       double balance_error = 0; ///< relative, see the class documentation
+      /// The signed relative imbalance where it is positive: energy the
+      /// integration created (an unstable step); 0 where energy was lost.
+      double created = 0;
     };
 
     /// Why step() refused a step.
@@ -89,12 +92,14 @@ namespace softgrasp
         const std::vector<dealii::types::global_dof_index> &dofs);
 
     /**
-     * Refuse steps whose energy balance error exceeds @p limit, from the
-     * 50th step and from time @p active_from (s) on: before, the energies
-     * are too small for a relative measure (a first touch of a rigid body
-     * makes it jump), while an unstable step grows exponentially and is
-     * caught by the non-finite and inversion checks, which act from the
-     * first step.
+     * Refuse steps that create energy beyond @p limit (Energies::created:
+     * an unstable integration gains energy; the impact losses of nodes
+     * arrested by a rigid body are dissipation and are not refused), from
+     * the 50th step and from time @p active_from (s) on: before, the
+     * energies are too small for a relative measure (a first touch of a
+     * rigid body makes it jump), while an unstable step grows
+     * exponentially and is caught by the non-finite and inversion checks,
+     * which act from the first step.
      */
     void set_balance_limit(const double limit, const double active_from = 0);
 
