@@ -276,7 +276,7 @@ namespace softgrasp
                  : Eigen::Vector3d::Zero();
       for (unsigned int c = 0; c < dim; ++c)
         t[node.dofs[c]] = traction_j[c];
-      p[scalar_index[j]] = closed ? node.normal.dot(traction_j) : 0.0;
+      p[scalar_index[j]] = contact_pressure(node, areas[j]);
       g[scalar_index[j]] = std::isfinite(node.gap) ? node.gap : 0.0;
       s[scalar_index[j]] = static_cast<double>(node.status);
     }

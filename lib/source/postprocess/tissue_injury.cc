@@ -227,16 +227,16 @@ namespace softgrasp
           for (std::size_t t = 0; t < limits.tensile_strains.size(); ++t)
             if (p.e_max() >= limits.tensile_strains[t])
               row.volume_stretched[t] += dV;
-          for (InjuryLocation *l : {&row.e_max, &row.e_min})
+          const auto place = [&](InjuryLocation &l, const double value)
           {
-            const double value = (l == &row.e_max) ? p.e_max() : p.e_min();
-            if ((l == &row.e_max) ? value > l->value : value < l->value)
-            {
-              l->value     = value;
-              l->reference = eigen(PlaneStrain::to_3d(X));
-              l->current   = eigen(PlaneStrain::to_3d(Point<dim>(X + u[q])));
-            }
-          }
+            l.value     = value;
+            l.reference = eigen(PlaneStrain::to_3d(X));
+            l.current   = eigen(PlaneStrain::to_3d(Point<dim>(X + u[q])));
+          };
+          if (p.e_max() > row.e_max.value)
+            place(row.e_max, p.e_max());
+          if (p.e_min() < row.e_min.value)
+            place(row.e_min, p.e_min());
         }
       }
 
@@ -272,7 +272,7 @@ namespace softgrasp
       const auto &node = nodes[j];
       if (node.status == ContactStatus::inactive || !(areas[j] > 0))
         continue;
-      const double p = node.normal.dot(node.force) / areas[j];
+      const double p = contact_pressure(node, areas[j]);
       pressure.contact_area += areas[j];
       for (std::size_t t = 0; t < limits.pressures.size(); ++t)
         if (p >= limits.pressures[t])

@@ -38,11 +38,9 @@ namespace softgrasp
 
   std::unique_ptr<Shape> create_shape(const ShapeSpec &spec)
   {
-    if (ShapeRegistry::all().count(spec.type) == 0)
-      throw InputError("Geom '" + spec.geom_name + "' has the unknown type '" +
-                       spec.type + "'. Fix: use one of: " +
-                       ShapeRegistry::names_separated_by(", ") + ".");
-    return ShapeRegistry::create(spec.type, "geom type")->build(spec);
+    return ShapeRegistry::create(spec.type,
+                                 "type of geom '" + spec.geom_name + "':")
+        ->build(spec);
   }
 
   std::unique_ptr<Shape> create_shape(const std::string     &type,

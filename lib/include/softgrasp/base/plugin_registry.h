@@ -51,7 +51,7 @@ namespace softgrasp
       if (it == entries().end())
         throw InputError("Unknown " + what + " '" + name +
                          "'. Valid names are: " + names_separated_by(", ") +
-                         ".");
+                         ". Fix: use one of them.");
       return it->second.create();
     }
 

@@ -62,6 +62,17 @@ namespace softgrasp
    * history table, and surface fields for the VTU files: contact traction (Pa),
    * contact pressure (Pa), gap (m) and status (0 open, 1 stick, 2 slip).
    */
+  /// The contact pressure (Pa; N/m in 2D per unit area) of a slave node
+  /// with the current nodal area @p area: n . f / area if the node is
+  /// closed, else 0 (as in the VTU field and the injury assessment).
+  template <int dim>
+  double contact_pressure(const ContactNode<dim> &node, const double area)
+  {
+    return node.status != ContactStatus::inactive && area > 0
+               ? node.normal.dot(node.force) / area
+               : 0.0;
+  }
+
   template <int dim> class ContactOutput
   {
   public:
