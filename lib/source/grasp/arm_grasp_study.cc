@@ -16,29 +16,41 @@ namespace softgrasp
   ArmGraspStudy::ArmGraspStudy(MPI_Comm comm, ParameterHandler &prm)
       : IndentationStudy(comm, prm)
   {
-    const auto *limb =
-        dynamic_cast<const LayeredLimb *>(&solver_inputs.mesh.generator());
-    if (limb == nullptr)
-      throw InputError("The arm grasp study needs 'Mesh/Type = layered "
-                       "limb' (it is '" +
-                       solver_inputs.mesh.type_name +
-                       "'): the rigid arm is made from the same geometry. "
-                       "Fix: set 'Mesh/Type = layered limb'; for your own "
-                       "anatomical mesh run the generic grasp study.");
-    geometry = limb->geometry;
     scene.parse_parameters(prm);
+    const MeshGenerator<3> &mesh = solver_inputs.mesh.generator();
+    if (const auto *limb = dynamic_cast<const LayeredLimb *>(&mesh))
+    {
+      geometry = limb->geometry;
+      skin     = LimbSurface::of_layered_limb(*geometry, scene.facets);
+    }
+    else
+    {
+      // A user's own limb mesh: the rigid arm is its coarse skin.
+      Triangulation<3> coarse;
+      mesh.create_coarse_mesh(coarse);
+      skin = LimbSurface::of_mesh(coarse, 0);
+    }
+  }
+
+  const LimbGeometry &ArmGraspStudy::limb() const
+  {
+    if (!geometry)
+      throw InputError("The arm grasp study runs on a limb mesh from a "
+                       "file, which has no layered-limb geometry. Fix: use "
+                       "skin_surface() for its shape.");
+    return *geometry;
   }
 
   std::string ArmGraspStudy::rigid_scene(const std::string &hand_file,
                                          const std::string &directory) const
   {
-    return scene.write(geometry, hand_file, directory);
+    return scene.write(skin, hand_file, directory);
   }
 
   void ArmGraspStudy::set_up_tissue(SolverInputs<3> &inputs,
                                     const Pose      &object) const
   {
-    const Pose            frame = LimbScene::limb_frame_in_body(geometry);
+    const Pose            frame = LimbScene::limb_frame_in_body(skin.length);
     const Eigen::Vector3d t     = object.to_world(frame.position);
     const Eigen::Matrix3d R =
         (object.orientation * frame.orientation).toRotationMatrix();
@@ -71,7 +83,7 @@ namespace softgrasp
     for (const auto &b : phases.bodies)
       if (b.name == parameters.object_body)
         object = &b;
-    const Pose frame = LimbScene::limb_frame_in_body(geometry);
+    const Pose frame = LimbScene::limb_frame_in_body(skin.length);
     axis             = object->poses.front().orientation *
            (frame.orientation * Eigen::Vector3d::UnitX());
     centre                  = object->poses.front().to_world(frame.position);

@@ -34,9 +34,9 @@ namespace softgrasp
     prm.declare_entry("Facets",
                       "96",
                       Patterns::Integer(8, 4096),
-                      "Facets around the rigid arm's skin surface (a convex "
-                      "triangle mesh of the finite element limb's skin). "
-                      "Unit: 1.");
+                      "Facets around the rigid arm's skin surface, made "
+                      "from the layered limb's shape; a limb mesh from a "
+                      "file gives its own skin faces instead. Unit: 1.");
     prm.leave_subsection();
   }
 
@@ -51,48 +51,24 @@ namespace softgrasp
     prm.leave_subsection();
   }
 
-  Pose LimbScene::limb_frame_in_body(const LimbGeometry &limb)
+  Pose LimbScene::limb_frame_in_body(const double length)
   {
     Eigen::Matrix3d R; // columns: the limb's x, y, z in the body frame
     R << 0, -1, 0,     //
         1, 0, 0,       //
         0, 0, 1;
     Pose pose;
-    pose.position    = Eigen::Vector3d(0, limb.length / 2, 0);
+    pose.position    = Eigen::Vector3d(0, length / 2, 0);
     pose.orientation = Eigen::Quaterniond(R);
     return pose;
   }
 
   namespace
   {
-    /// A binary STL of the limb's skin: two rings (the taper is linear, so
-    /// the lateral surface is ruled) and two end caps, outward normals;
-    /// @p volume is set to the enclosed volume (m^3).
-    std::string skin_stl(const LimbGeometry &limb,
-                         const Pose         &frame,
-                         const unsigned int  n,
-                         double             &volume)
+    /// A binary STL of @p surface moved into the arm body's frame by
+    /// @p frame.
+    std::string skin_stl(const LimbSurface &surface, const Pose &frame)
     {
-      std::vector<std::array<Eigen::Vector3d, 3>> triangles;
-      const double                                L = limb.length;
-      const auto point = [&](const unsigned int i, const double x)
-      {
-        const auto   s = limb.semi_axes(4, x);
-        const double t = 2 * M_PI * (i % n) / n;
-        return frame.to_world(
-            Eigen::Vector3d(x, s[0] * std::cos(t), s[1] * std::sin(t)));
-      };
-      const Eigen::Vector3d shoulder = frame.to_world({-L / 2, 0, 0});
-      const Eigen::Vector3d elbow    = frame.to_world({L / 2, 0, 0});
-      for (unsigned int i = 0; i < n; ++i)
-      {
-        const auto a0 = point(i, -L / 2), a1 = point(i + 1, -L / 2);
-        const auto b0 = point(i, L / 2), b1 = point(i + 1, L / 2);
-        triangles.push_back({{a0, a1, b0}});
-        triangles.push_back({{a1, b1, b0}});
-        triangles.push_back({{shoulder, a1, a0}});
-        triangles.push_back({{elbow, b0, b1}});
-      }
       std::string       out(80, '\0');
       const std::string header = "softgrasp limb skin surface (m)";
       out.replace(0, header.size(), header);
@@ -102,12 +78,13 @@ namespace softgrasp
         std::memcpy(bytes, &value, sizeof(value));
         out.append(bytes, sizeof(value));
       };
-      put(static_cast<std::uint32_t>(triangles.size()));
-      volume = 0;
-      for (const auto &t : triangles)
+      put(static_cast<std::uint32_t>(surface.triangles.size()));
+      for (const auto &triangle : surface.triangles)
       {
-        volume += t[0].dot(t[1].cross(t[2])) / 6;
-        const Eigen::Vector3d normal =
+        const LimbSurface::Triangle t = {{frame.to_world(triangle[0]),
+                                          frame.to_world(triangle[1]),
+                                          frame.to_world(triangle[2])}};
+        const Eigen::Vector3d       normal =
             (t[1] - t[0]).cross(t[2] - t[0]).normalized();
         for (const auto &v : {normal, t[0], t[1], t[2]})
           for (unsigned int d = 0; d < 3; ++d)
@@ -118,9 +95,9 @@ namespace softgrasp
     }
   } // namespace
 
-  std::string LimbScene::write(const LimbGeometry &limb,
-                               const std::string  &hand_file,
-                               const std::string  &directory) const
+  std::string LimbScene::write(const LimbSurface &limb,
+                               const std::string &hand_file,
+                               const std::string &directory) const
   {
     namespace fs = std::filesystem;
     if (!fs::exists(hand_file))
@@ -139,16 +116,15 @@ namespace softgrasp
       throw InputError("Cannot reach the hand's MJCF file '" + hand_file +
                        "' from '" + folder +
                        "'. Fix: keep both on the same file system.");
-    const Pose frame  = limb_frame_in_body(limb);
-    double     volume = 0;
-    AtomicFile::write(folder + "/mujoco_arm_skin.stl",
-                      skin_stl(limb, frame, facets, volume));
+    const Pose   frame  = limb_frame_in_body(limb.length);
+    const double volume = limb.volume();
+    AtomicFile::write(folder + "/mujoco_arm_skin.stl", skin_stl(limb, frame));
     std::ostringstream xml;
     xml << std::setprecision(17);
     // The geom's mass is given: MuJoCo 2.2 infers a mesh's mass from its
     // equivalent inertia box (3/pi of a cylinder's volume).
-    xml << "<!-- Written by softgrasp from the layered limb's geometry (the "
-           "finite element limb's skin); see doc/studies.md. -->\n"
+    xml << "<!-- Written by softgrasp from the finite element limb's skin "
+           "surface; see doc/studies.md. -->\n"
         << "<mujoco model=\"arm_grasp\">\n"
         << "  <compiler angle=\"radian\" autolimits=\"true\"/>\n"
         << "  <option timestep=\"0.001\" gravity=\"0 0 -9.81\" "

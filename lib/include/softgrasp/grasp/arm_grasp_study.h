@@ -1,6 +1,7 @@
 #ifndef softgrasp_grasp_arm_grasp_study_h
 #define softgrasp_grasp_arm_grasp_study_h
 
+#include <optional>
 #include <softgrasp/grasp/indentation_study.h>
 #include <softgrasp/grasp/limb_scene.h>
 #include <softgrasp/grasp/section_pictures.h>
@@ -10,10 +11,11 @@ namespace softgrasp
 {
   /**
    * The arm grasp (the source paper's first case study) on the layered
-   * limb: the rigid stage grasps a rigid arm made from the limb's own
-   * geometry (LimbScene), the finite element stage places the layered limb
-   * ('Mesh/Type = layered limb') at the arm body's recorded pose and drives
-   * the fingers into it. See doc/studies.md.
+   * limb ('Mesh/Type = layered limb') or on a user's own limb mesh
+   * ('Mesh/Type = file', with the layered limb's ids and frame): the rigid
+   * stage grasps a rigid arm made from the limb's skin surface (LimbScene),
+   * the finite element stage places the limb at the arm body's recorded
+   * pose and drives the fingers into it. See doc/studies.md.
    */
   class ArmGraspStudy : public IndentationStudy
   {
@@ -25,10 +27,13 @@ namespace softgrasp
     std::string rigid_scene(const std::string &hand_file,
                             const std::string &directory) const override;
 
-    /// The limb's geometry (from 'Mesh/Layered limb').
-    const LimbGeometry &limb() const
+    /// The limb's geometry (from 'Mesh/Layered limb'); an InputError for
+    /// a limb mesh from a file.
+    const LimbGeometry &limb() const;
+    /// The skin surface the rigid arm is made of (limb frame).
+    const LimbSurface &skin_surface() const
     {
-      return geometry;
+      return skin;
     }
 
     /// The sliced views of the last run (complete on rank 0): vertical,
@@ -57,11 +62,12 @@ namespace softgrasp
                      const KinematicsData     &phases) override;
 
   private:
-    LimbGeometry             geometry;
-    LimbScene                scene;
-    std::vector<SectionView> views;
-    Eigen::Vector3d          centre = Eigen::Vector3d::Zero();
-    Eigen::Vector3d          axis   = Eigen::Vector3d::UnitX();
+    std::optional<LimbGeometry> geometry; ///< of a layered limb
+    LimbSurface                 skin;
+    LimbScene                   scene;
+    std::vector<SectionView>    views;
+    Eigen::Vector3d             centre = Eigen::Vector3d::Zero();
+    Eigen::Vector3d             axis   = Eigen::Vector3d::UnitX();
   };
 } // namespace softgrasp
 

@@ -2,17 +2,17 @@
 #define softgrasp_grasp_limb_scene_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <softgrasp/meshes/layered_limb.h>
+#include <softgrasp/grasp/limb_surface.h>
 #include <softgrasp/rigid/pose.h>
 #include <string>
 
 namespace softgrasp
 {
   /**
-   * The rigid arm of a MuJoCo grasp scene, made from the same LimbGeometry
-   * as the finite element limb, so that the two cannot disagree: its geom
-   * is the limb's skin surface (a convex triangle mesh), its body ("object")
-   * hangs from the shoulder on a damped ball joint with a restoring
+   * The rigid arm of a MuJoCo grasp scene, made from the finite element
+   * limb's skin surface (LimbSurface), so that the two cannot disagree: its
+   * geom is that surface (MuJoCo collides with its convex hull), its body
+   * ("object") hangs from the shoulder on a damped ball joint with a restoring
    * stiffness, gravity on: the upper arm of a casualty lying on their back,
    * lifted clear of the ground and held by the shoulder for a grasp from
    * above (doc/studies.md).
@@ -33,18 +33,20 @@ namespace softgrasp
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
 
-    /// The pose of the limb's own frame in the arm body's frame.
-    static Pose limb_frame_in_body(const LimbGeometry &limb);
+    /// The pose of the limb's own frame in the arm body's frame, for a limb
+    /// of @p length (m) along its axis.
+    static Pose limb_frame_in_body(const double length);
 
     /**
-     * Write <directory>/mujoco_arm_skin.stl (the skin surface in the body
-     * frame) and <directory>/mujoco_arm_scene.xml, which includes
+     * Write <directory>/mujoco_arm_skin.stl (@p limb in the body frame;
+     * the arm's mass is the density times its volume) and
+     * <directory>/mujoco_arm_scene.xml, which includes
      * @p hand_file (the hand MJCF) and holds the arm; returns the scene's
      * path.
      */
-    std::string write(const LimbGeometry &limb,
-                      const std::string  &hand_file,
-                      const std::string  &directory) const;
+    std::string write(const LimbSurface &limb,
+                      const std::string &hand_file,
+                      const std::string &directory) const;
   };
 } // namespace softgrasp
 
