@@ -27,7 +27,7 @@ namespace softgrasp
       std::ifstream in(filename);
       if (!in)
         throw InputError("Cannot open the mesh file '" + filename +
-                         "'. Fix: check 'Mesh/File name'; relative paths "
+                         "'. Fix: check 'Mesh/File/File name'; relative paths "
                          "are read from the working directory.");
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(triangulation);
