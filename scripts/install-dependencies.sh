@@ -15,6 +15,9 @@ packages=(
   libmujoco-dev libqhull-dev libgl-dev
   # data, algebra, serialization
   libhdf5-dev libeigen3-dev libboost-dev libboost-serialization-dev
+  # optimised BLAS/LAPACK for the direct solver (MUMPS): becomes the system's
+  # libblas.so.3 and liblapack.so.3 through Debian's alternatives
+  libopenblas0-serial
   # testing and plotting
   numdiff libbenchmark-dev gnuplot-nox time
 )
