@@ -31,6 +31,7 @@ namespace
     in.f  = f;
     in.mu = mu;
     in.c  = 50;
+    in.c_t = 50;
     return in;
   }
 

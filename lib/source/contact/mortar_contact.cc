@@ -38,7 +38,18 @@ namespace softgrasp
                                 (dim - 2.0) / (dim - 1.0));
       law[j].c =
           this->parameters.complementarity_factor * 2 * shear_modulus * h;
+      law[j].c_t = law[j].c;
     }
+  }
+
+  template <int dim>
+  void
+  MortarContact<dim>::set_inertia(const TrilinosWrappers::MPI::Vector &mass,
+                                  const double inverse_dt_squared)
+  {
+    for (unsigned int j = 0; j < law.size(); ++j)
+      law[j].c_t =
+          law[j].c + inverse_dt_squared * mass[node_list[j].dofs[0]];
   }
 
   template <int dim>
@@ -108,6 +119,7 @@ namespace softgrasp
       input.f   = f;
       input.mu  = parameters.friction_coefficient;
       input.c   = rule.c;
+      input.c_t = rule.c_t;
       input.gap = p.gap;
       input.n   = p.body >= 0 ? p.normal : Eigen::Vector3d(0, 0, 1);
       input.H.setZero();

@@ -32,14 +32,15 @@ namespace softgrasp
     const Matrix3d M1       = -f_n * in.H - n * (in.H * in.f).transpose();
     const Matrix3d S = P_t - n.dot(in.w) * in.H - n * (in.H * in.w).transpose();
     const Vector3d f_t   = P_t * in.f;
-    const Vector3d trial = f_t - in.c * out.slip;
+    const double   c_t   = in.c_t;
+    const Vector3d trial = f_t - c_t * out.slip;
 
     if (in.mu > 0 && trial.norm() <= in.mu * trial_normal)
     {
       out.status = ContactStatus::stick;
-      out.phi    = in.c * (in.gap * n + out.slip);
+      out.phi    = in.c * in.gap * n + c_t * out.slip;
       out.A.setZero();
-      out.B = in.c * (gap_rows + S);
+      out.B = in.c * gap_rows + c_t * S;
       return out;
     }
 
@@ -57,7 +58,7 @@ namespace softgrasp
     out.phi               = in.c * in.gap * n + f_t - in.mu * f_n * t_hat;
     out.A = P_t - in.mu * t_hat * n.transpose() - in.mu * f_n * N_hat * P_t;
     out.B = in.c * gap_rows + M1 - in.mu * t_hat * (in.H * in.f).transpose() -
-            in.mu * f_n * N_hat * (M1 - in.c * S);
+            in.mu * f_n * N_hat * (M1 - c_t * S);
     return out;
   }
 } // namespace softgrasp

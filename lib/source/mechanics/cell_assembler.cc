@@ -102,6 +102,7 @@ namespace softgrasp
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       const TrilinosWrappers::MPI::Vector                  &u,
       const bool                                            with_matrix,
+      const InertiaTerm                                    &inertia,
       AssemblyScratchData<dim>                             &scratch,
       AssemblyCopyData                                     &copy) const
   {
@@ -117,8 +118,10 @@ namespace softgrasp
     scratch.fe_values.reinit(cell);
     try
     {
-      assemble_volume(
-          u, materials.get(cell->material_id()), with_matrix, scratch, copy);
+      const Material &material = materials.get(cell->material_id());
+      assemble_volume(u, material, with_matrix, scratch, copy);
+      if (inertia.active())
+        add_inertia(u, material, with_matrix, inertia, scratch, copy);
       assemble_boundary(cell, u, with_matrix, scratch, copy);
     }
     catch (const InvertedMaterialState &e)
@@ -256,6 +259,39 @@ namespace softgrasp
       for (unsigned int k = 0; k < n; ++k)
         for (unsigned int l = k + 1; l < n; ++l)
           copy.matrix(k, l) = copy.matrix(l, k);
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::lumped_mass(const FEValues<dim> &fe_values,
+                                       const double         density,
+                                       Vector<double>      &mass)
+  {
+    const unsigned int n = fe_values.get_fe().n_dofs_per_cell();
+    mass.reinit(n);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      for (unsigned int k = 0; k < n; ++k)
+        mass[k] += density * fe_values.shape_value(k, q) * fe_values.JxW(q);
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::add_inertia(const TrilinosWrappers::MPI::Vector &u,
+                                       const Material           &material,
+                                       const bool                with_matrix,
+                                       const InertiaTerm        &inertia,
+                                       AssemblyScratchData<dim> &scratch,
+                                       AssemblyCopyData         &copy) const
+  {
+    Vector<double> mass;
+    lumped_mass(scratch.fe_values, material.density(), mass);
+    const double factor = inertia.inverse_dt_squared;
+    for (unsigned int k = 0; k < mass.size(); ++k)
+    {
+      const auto index = copy.dof_indices[k];
+      copy.internal[k] +=
+          mass[k] * factor * (u[index] - (*inertia.predictor)[index]);
+      if (with_matrix)
+        copy.matrix(k, k) += mass[k] * factor;
+    }
   }
 
   template <int dim>

@@ -192,14 +192,16 @@ namespace softgrasp
   template <int dim> void MechanicsSolver<dim>::check_contact_setup() const
   {
     const bool has_surface = !contact_parameters.slave_boundary_ids.empty();
-    if (needs_tangent() && boundary_conditions.dirichlet.empty() &&
-        !has_surface)
+    const bool static_solve =
+        solver_parameters.time.integrator == TimeIntegrator::quasi_static;
+    if (static_solve && boundary_conditions.dirichlet.empty() && !has_surface)
       throw InputError(
           "No Dirichlet boundary and no contact: nothing holds the body, so "
           "it is free to move as a rigid body and the quasi-static problem "
           "has no unique solution. Fix: fix a boundary ('Boundary "
           "conditions/Dirichlet boundary ids'), or use 'Time/Integrator = "
-          "explicit dynamic', where inertia decides the motion.");
+          "implicit dynamic' or 'explicit dynamic', where inertia decides "
+          "the motion.");
     if (has_surface && bodies.empty())
       throw InputError("'Contact/Slave boundary ids' is set but there is no "
                        "rigid body. Fix: name the bodies in 'Rigid "

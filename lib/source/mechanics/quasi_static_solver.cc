@@ -1,3 +1,4 @@
+#include <cmath>
 #include <deal.II/base/multithread_info.h>
 #include <filesystem>
 #include <iomanip>
@@ -15,6 +16,49 @@ namespace softgrasp
       : MechanicsSolver<dim>(comm, inputs)
       , newton(this->solver_parameters.newton, this->verbose_out)
   {
+    if (dynamic())
+      this->n_restored_fields = 1; // the velocity
+  }
+
+  template <int dim> bool QuasiStaticSolver<dim>::dynamic() const
+  {
+    return this->solver_parameters.time.integrator ==
+           TimeIntegrator::implicit_dynamic;
+  }
+
+  template <int dim>
+  void
+  QuasiStaticSolver<dim>::set_inertia(const TrilinosWrappers::MPI::Vector &u_n,
+                                      const double                         dt)
+  {
+    if (!dynamic())
+      return;
+    TrilinosWrappers::MPI::Vector owned(u_n);
+    owned.add(dt, velocity);
+    predictor = owned;
+    this->solid->set_inertia({&predictor, 1.0 / (dt * dt)});
+    if (mortar)
+      mortar->set_inertia(ghosted_mass, 1.0 / (dt * dt));
+  }
+
+  template <int dim>
+  void QuasiStaticSolver<dim>::update_velocity(
+      const TrilinosWrappers::MPI::Vector &u_n,
+      const double                         dt)
+  {
+    if (!dynamic())
+      return;
+    velocity = this->solid->solution();
+    velocity -= u_n;
+    velocity /= dt;
+  }
+
+  template <int dim> double QuasiStaticSolver<dim>::kinetic_energy() const
+  {
+    double energy = 0;
+    for (const auto i : mass.locally_owned_elements())
+      energy += 0.5 * mass[i] * velocity[i] * velocity[i];
+    return Utilities::MPI::sum(energy, this->comm);
   }
 
   template <int dim>
@@ -41,13 +85,29 @@ namespace softgrasp
     if (!this->contact_parameters.slave_boundary_ids.empty())
       trailing = {
           "contact_active_nodes", "contact_slip_nodes", "active_set_changes"};
-    this->prepare_run({"step_size",
-                       "newton_iterations",
-                       "linear_iterations",
-                       "cut_backs",
-                       "wall_time"},
-                      trailing);
+    std::vector<std::string> leading = {"step_size",
+                                        "newton_iterations",
+                                        "linear_iterations",
+                                        "cut_backs",
+                                        "wall_time"};
+    if (dynamic())
+      leading.push_back("kinetic_energy");
+    this->prepare_run(leading, trailing);
     const bool resume = solver_parameters.checkpoint.resume;
+    if (dynamic())
+    {
+      mass = solid->lumped_mass();
+      ghosted_mass.reinit(solid->locally_owned_dofs(),
+                          solid->locally_relevant_dofs(),
+                          this->comm);
+      ghosted_mass = mass;
+      velocity.reinit(solid->locally_owned_dofs(), this->comm);
+      predictor.reinit(solid->locally_owned_dofs(),
+                       solid->locally_relevant_dofs(),
+                       this->comm);
+      if (resume)
+        velocity = this->restored_fields[0];
+    }
     previous_time     = state.time;
     if (mortar)
     {
@@ -76,12 +136,17 @@ namespace softgrasp
                    "tissue."
                 << std::endl;
       }
-      if (!solve_step(0.0, report))
+      // Implicit dynamics starts from its initial conditions (u = v = 0),
+      // which need not be in equilibrium (e.g. a body let go under
+      // gravity); a quasi-static run starts in equilibrium.
+      if (!dynamic() && !solve_step(0.0, report))
         throw SolverFailure("The initial state (t = 0) is not in equilibrium "
                             "and Newton failed on it: " +
                             report +
                             ". Fix: make the loads and prescribed "
                             "displacements zero at t = 0.");
+      if (dynamic())
+        evaluate_initial_state();
       record_step(0.0, 0, 0, 0);
       this->write_fields(0.0);
     }
@@ -98,6 +163,7 @@ namespace softgrasp
         t_new = std::min(state.time + dt, time.end_time);
         if (time.end_time - t_new < 1e-9 * dt)
           t_new = time.end_time;
+        set_inertia(u_converged, t_new - state.time);
         if (solve_step(t_new, report))
           break;
         solid->solution() = u_converged;
@@ -107,7 +173,7 @@ namespace softgrasp
         {
           this->boundary_conditions.set_time(state.time);
           this->write_fields(state.time);
-          this->write_checkpoint();
+          write_state();
           std::ostringstream message;
           message << report << "\nThe step was cut back " << cut_backs - 1
                   << " time(s) down to dt = " << dt
@@ -125,6 +191,7 @@ namespace softgrasp
         pcout << report << "\n  -> cutting back to dt = " << dt << " s"
               << std::endl;
       }
+      update_velocity(u_converged, t_new - state.time);
       state.time = t_new;
       ++state.step;
       record_step(
@@ -138,7 +205,7 @@ namespace softgrasp
         this->write_fields(state.time);
       const unsigned int every = solver_parameters.checkpoint.interval;
       if (every > 0 && state.step % every == 0)
-        this->write_checkpoint();
+        write_state();
 
       pcout << "Step " << std::setw(4) << state.step
             << "  t = " << std::setw(10) << state.time << " s (" << std::setw(3)
@@ -192,12 +259,14 @@ namespace softgrasp
                                            const unsigned int linear_iterations,
                                            const unsigned int cut_backs)
   {
-    const std::vector<double> leading = {
+    std::vector<double> leading = {
         this->state.step == 0 ? 0.0 : time - previous_time,
         double(newton_iterations),
         double(linear_iterations),
         double(cut_backs),
         this->progress.elapsed()};
+    if (dynamic())
+      leading.push_back(kinetic_energy());
     previous_time = time;
     std::vector<double> trailing;
     if (mortar)
@@ -207,6 +276,38 @@ namespace softgrasp
     this->record(time, leading, trailing);
     if (mortar)
       mortar->accept_step(*this->solid, time);
+  }
+
+  template <int dim> void QuasiStaticSolver<dim>::evaluate_initial_state()
+  {
+    this->boundary_conditions.set_time(0.0);
+    if (mortar)
+      mortar->set_time(0.0);
+    const double violation = this->solid->update_constraints();
+    if (violation > 0)
+      throw SolverFailure(
+          "Implicit dynamics starts from u = 0, but the prescribed "
+          "displacements at t = 0 differ from zero (by up to " +
+          std::to_string(violation) +
+          " m). Fix: make them zero at t = 0 and ramp them up.");
+    const auto state = this->solid->assemble(false);
+    if (!state.ok || !std::isfinite(state.residual_norm))
+      throw SolverFailure("The initial state (t = 0) cannot be evaluated: " +
+                          state.failed_cell);
+  }
+
+  template <int dim> void QuasiStaticSolver<dim>::write_state()
+  {
+    if (!dynamic())
+    {
+      this->write_checkpoint();
+      return;
+    }
+    TrilinosWrappers::MPI::Vector ghosted(this->solid->locally_owned_dofs(),
+                                          this->solid->locally_relevant_dofs(),
+                                          this->comm);
+    ghosted = velocity;
+    this->write_checkpoint({&ghosted});
   }
 
   template class QuasiStaticSolver<2>;

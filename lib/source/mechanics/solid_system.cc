@@ -219,7 +219,9 @@ namespace softgrasp
     auto worker      = [&](const Iterator           &cell,
                       AssemblyScratchData<dim> &scratch,
                       AssemblyCopyData         &copy)
-    { assembler.assemble(cell, u_ghosted, with_matrix, scratch, copy); };
+    {
+      assembler.assemble(cell, u_ghosted, with_matrix, inertia, scratch, copy);
+    };
     auto copier = [&](const AssemblyCopyData &copy)
     {
       if (copy.failed)
@@ -310,6 +312,38 @@ namespace softgrasp
         linear_solver.solve(tangent, du, rhs, symmetric);
     constraints.distribute(du);
     return result;
+  }
+
+  template <int dim> void SolidSystem<dim>::set_inertia(const InertiaTerm &term)
+  {
+    inertia = term;
+  }
+
+  template <int dim>
+  TrilinosWrappers::MPI::Vector SolidSystem<dim>::lumped_mass() const
+  {
+    TrilinosWrappers::MPI::Vector mass;
+    mass.reinit(owned, relevant, communicator(), /*vector_writable=*/true);
+    FEValues<dim>                 fe_values(reference_mapping,
+                                finite_element,
+                                quadrature,
+                                update_values | update_JxW_values);
+    std::vector<types::global_dof_index> indices(
+        finite_element.n_dofs_per_cell());
+    Vector<double> local;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        fe_values.reinit(cell);
+        CellAssembler<dim>::lumped_mass(
+            fe_values, materials.get(cell->material_id()).density(), local);
+        cell->get_dof_indices(indices);
+        mass.add(indices, local); // hanging nodes keep their own mass
+      }
+    mass.compress(VectorOperation::add);
+    TrilinosWrappers::MPI::Vector owned_mass(owned, communicator());
+    owned_mass = mass;
+    return owned_mass;
   }
 
   template <int dim>

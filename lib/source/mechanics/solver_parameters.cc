@@ -14,6 +14,11 @@ namespace softgrasp
     const std::vector<std::pair<std::string, Formulation>> formulation_names = {
         {"displacement", Formulation::displacement},
         {"mixed u-p-J", Formulation::mixed_upJ}};
+    const std::vector<std::pair<std::string, TimeIntegrator>>
+        integrator_names = {
+            {"quasi-static", TimeIntegrator::quasi_static},
+            {"implicit dynamic", TimeIntegrator::implicit_dynamic},
+            {"explicit dynamic", TimeIntegrator::explicit_dynamic}};
     const std::vector<std::pair<std::string, LinearSolverType>> solver_names = {
         {"direct", LinearSolverType::direct},
         {"iterative", LinearSolverType::iterative}};
@@ -78,10 +83,15 @@ namespace softgrasp
     prm.declare_entry(
         "Integrator",
         "quasi-static",
-        Patterns::Selection("quasi-static|explicit dynamic"),
+        Patterns::Selection(selection(integrator_names)),
         "Time integration. 'quasi-static': static equilibrium at every load "
         "step by Newton's method (inertia neglected; the 'Newton' and "
-        "'Linear solver' subsections apply). 'explicit dynamic': central "
+        "'Linear solver' subsections apply). 'implicit dynamic': the same "
+        "Newton solver with the inertia of the lumped mass, backward Euler "
+        "in time (first order, damps the fast motion of a snap, so that a "
+        "slow load follows the static path where one exists and passes "
+        "through a snap where none does; t is physical time and the "
+        "history reports the kinetic energy). 'explicit dynamic': central "
         "differences with a lumped mass and the stable time step (inertia "
         "included; the 'Explicit dynamics' subsection applies, and 'Time "
         "step' is the interval between recorded states).");
@@ -116,9 +126,7 @@ namespace softgrasp
   {
     prm.enter_subsection("Time");
     const CheckedSection section(prm, "Time");
-    integrator    = prm.get("Integrator") == "explicit dynamic"
-                        ? TimeIntegrator::explicit_dynamic
-                        : TimeIntegrator::quasi_static;
+    integrator    = lookup(integrator_names, prm.get("Integrator"));
     end_time      = section.get_positive("End time", "s");
     step_size     = section.get_positive("Time step", "s");
     minimum_step  = section.get_positive("Minimum time step", "s");

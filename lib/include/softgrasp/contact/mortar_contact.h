@@ -65,6 +65,16 @@ namespace softgrasp
                                dealii::TrilinosWrappers::MPI::Vector  &rhs) const override;
     std::string iteration_report() const override;
 
+    /**
+     * Implicit dynamics: add each node's inertia stiffness m_j/dt^2 to its
+     * tangential complementarity parameter (c_t = c + m_j/dt^2), so that
+     * the stick/slip prediction weighs the slip against the stiffness the
+     * node really has; @p mass (kg per dof; ghosted) is the lumped mass.
+     * @p inverse_dt_squared = 0 restores c_t = c (quasi-static).
+     */
+    void set_inertia(const dealii::TrilinosWrappers::MPI::Vector &mass,
+                     const double inverse_dt_squared);
+
     /// Status changes since the evaluation before.
     unsigned int n_changes() const;
     /// Status changes summed over all evaluations since the last
@@ -89,6 +99,7 @@ namespace softgrasp
     struct NodeLaw
     {
       double          c   = 0; ///< complementarity parameter (N/m)
+      double          c_t = 0; ///< the same for the tangential conditions
       Eigen::Vector3d phi = Eigen::Vector3d::Zero();
       Eigen::Matrix3d A   = Eigen::Matrix3d::Identity();
       Eigen::Matrix3d B   = Eigen::Matrix3d::Zero();

@@ -27,7 +27,8 @@ namespace softgrasp
     Eigen::Vector3d w;   ///< displacement relative to the rigid surface's
                          ///< material point since the last converged step (m)
     double mu = 0;       ///< Coulomb friction coefficient
-    double c  = 1;       ///< complementarity parameter (N/m)
+    double c  = 1;       ///< complementarity parameter, normal (N/m)
+    double c_t = 1;      ///< complementarity parameter, tangential (N/m)
   };
 
   /**
@@ -52,13 +53,16 @@ namespace softgrasp
    * Popp et al. 2010), with the active set decided by the trial values
    *   t_n = n . f - c g,   t_t = (I - n n^T) f - c s:
    * - inactive (t_n <= 0):            Phi = f (no contact force);
-   * - stick (|t_t| <= mu t_n):        Phi = c g n + c s (closed, no slip);
+   * - stick (|t_t| <= mu t_n):        Phi = c g n + c_t s (closed, no
+   *                                          slip);
    * - slip (frictionless, or
    *   |t_t| > mu t_n):                Phi = c g n + (I - n n^T) f
    *                                          - mu (n . f) t_t / |t_t|.
    * The linearisation is complete (it includes the rotation of the normal
    * through H), so Newton converges quadratically once the active set has
-   * settled. c scales only the active-set prediction, not the solution.
+   * settled. c and c_t scale only the active-set prediction, not the
+   * solution; they should be of the order of the node's stiffness, or the
+   * prediction is decided by the unconverged forces alone.
    */
   NodalContactLinearization
   evaluate_nodal_contact(const NodalContactInput &input);

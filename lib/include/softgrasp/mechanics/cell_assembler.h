@@ -47,6 +47,24 @@ namespace softgrasp
   };
 
   /**
+   * The inertia of an implicit dynamic (backward Euler) step: on every cell
+   * f_k += m_k (u_k - u*_k) / dt^2 and K_kk += m_k / dt^2, with the
+   * row-sum lumped element mass m_k = int rho_0 N_k dV (positive for FE_Q of
+   * degree 1 and 2) and the predictor u* = u_n + dt v_n. Inactive (quasi-
+   * static) when predictor is null.
+   */
+  struct InertiaTerm
+  {
+    /// u* (m), ghosted; null: no inertia.
+    const dealii::TrilinosWrappers::MPI::Vector *predictor = nullptr;
+    double inverse_dt_squared = 0; ///< 1/dt^2 (1/s^2)
+    bool   active() const
+    {
+      return predictor != nullptr;
+    }
+  };
+
+  /**
    * The weak form of the quasi-static solid on one cell, in the spatial
    * (updated) form of the total-Lagrangian equations (as deal.II step-44):
    *   internal force  f_k = int tau : sym(grad_x N_k) dV,
@@ -56,7 +74,8 @@ namespace softgrasp
    *   body force      int N_k rho_0 g dV,
    *   dead traction   int N_k t_0 dA,
    *   follower load   -int N_k p J F^-T N dA, with its (unsymmetric)
-   *                   linearisation.
+   *                   linearisation,
+   *   inertia         (implicit dynamics only) see InertiaTerm.
    * Integrals are over the reference configuration. In 2D the material is
    * evaluated in plane strain.
    */
@@ -72,10 +91,24 @@ namespace softgrasp
     assemble(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
              const dealii::TrilinosWrappers::MPI::Vector                  &u,
              const bool                with_matrix,
+             const InertiaTerm        &inertia,
              AssemblyScratchData<dim> &scratch,
              AssemblyCopyData         &copy) const;
 
+    /// The row-sum lumped mass m_k = int rho_0 N_k dV (kg; kg/m in 2D) of
+    /// the cell that @p fe_values was last reinit'ed on.
+    static void lumped_mass(const dealii::FEValues<dim> &fe_values,
+                            const double                 density,
+                            dealii::Vector<double>      &mass);
+
   private:
+    void add_inertia(const dealii::TrilinosWrappers::MPI::Vector &u,
+                     const Material                              &material,
+                     const bool                                   with_matrix,
+                     const InertiaTerm                           &inertia,
+                     AssemblyScratchData<dim>                    &scratch,
+                     AssemblyCopyData                            &copy) const;
+
     void assemble_volume(const dealii::TrilinosWrappers::MPI::Vector &u,
                          const Material                              &material,
                          const bool                with_matrix,

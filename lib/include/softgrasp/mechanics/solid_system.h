@@ -66,6 +66,14 @@ namespace softgrasp
     /// Assemble f_int - f_ext (and the tangent) at the current solution.
     AssemblyResult assemble(const bool with_matrix);
 
+    /// Include the inertia of an implicit dynamic step in the assemblies
+    /// that follow (InertiaTerm; a default-constructed one removes it).
+    void set_inertia(const InertiaTerm &inertia);
+
+    /// The row-sum lumped mass per dof (kg; kg/m in 2D), owned entries;
+    /// the same masses as the inertia term. Collective.
+    dealii::TrilinosWrappers::MPI::Vector lumped_mass() const;
+
     /// Solve K du = -r with the last assembled system; du obeys constraints.
     LinearSolver::Result solve(dealii::TrilinosWrappers::MPI::Vector &du);
 
@@ -147,6 +155,7 @@ namespace softgrasp
     double                                     domain_size      = 1; ///< m
     NodalConditions<dim>                      *nodal_conditions = nullptr;
     bool                                       with_tangent     = true;
+    InertiaTerm                                inertia;
   };
 } // namespace softgrasp
 

@@ -33,6 +33,9 @@ namespace softgrasp
     /// Implicit: static equilibrium at each load step (Newton), inertia
     /// neglected; QuasiStaticSolver.
     quasi_static,
+    /// Implicit with the lumped mass's inertia, backward Euler;
+    /// QuasiStaticSolver with its InertiaTerm.
+    implicit_dynamic,
     /// Explicit central difference with lumped mass and inertia;
     /// ExplicitSolver.
     explicit_dynamic
