@@ -38,6 +38,7 @@ namespace softgrasp
                                 (dim - 2.0) / (dim - 1.0));
       law[j].c =
           this->parameters.complementarity_factor * 2 * shear_modulus * h;
+      law[j].c_n = law[j].c;
       law[j].c_t = law[j].c;
     }
   }
@@ -48,8 +49,10 @@ namespace softgrasp
                                   const double inverse_dt_squared)
   {
     for (unsigned int j = 0; j < law.size(); ++j)
-      law[j].c_t =
-          law[j].c + inverse_dt_squared * mass[node_list[j].dofs[0]];
+    {
+      law[j].c_n = law[j].c + inverse_dt_squared * mass[node_list[j].dofs[0]];
+      law[j].c_t = law[j].c_n;
+    }
   }
 
   template <int dim>
@@ -118,7 +121,7 @@ namespace softgrasp
       NodalContactInput   input;
       input.f   = f;
       input.mu  = parameters.friction_coefficient;
-      input.c   = rule.c;
+      input.c   = rule.c_n;
       input.c_t = rule.c_t;
       input.gap = p.gap;
       input.n   = p.body >= 0 ? p.normal : Eigen::Vector3d(0, 0, 1);

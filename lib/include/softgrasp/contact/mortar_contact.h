@@ -67,10 +67,10 @@ namespace softgrasp
 
     /**
      * Implicit dynamics: add each node's inertia stiffness m_j/dt^2 to its
-     * tangential complementarity parameter (c_t = c + m_j/dt^2), so that
-     * the stick/slip prediction weighs the slip against the stiffness the
-     * node really has; @p mass (kg per dof; ghosted) is the lumped mass.
-     * @p inverse_dt_squared = 0 restores c_t = c (quasi-static).
+     * complementarity parameters (c_n = c_t = c + m_j/dt^2), so that the
+     * open/closed and stick/slip predictions weigh gap and slip against
+     * the stiffness the node really has; @p mass (kg per dof; ghosted) is
+     * the lumped mass. @p inverse_dt_squared = 0 restores c (quasi-static).
      */
     void set_inertia(const dealii::TrilinosWrappers::MPI::Vector &mass,
                      const double inverse_dt_squared);
@@ -98,8 +98,9 @@ namespace softgrasp
     /// The complementarity function of a node and its linearisation.
     struct NodeLaw
     {
-      double          c   = 0; ///< complementarity parameter (N/m)
-      double          c_t = 0; ///< the same for the tangential conditions
+      double          c   = 0; ///< complementarity parameter, static (N/m)
+      double          c_n = 0; ///< used for the normal conditions (N/m)
+      double          c_t = 0; ///< used for the tangential conditions
       Eigen::Vector3d phi = Eigen::Vector3d::Zero();
       Eigen::Matrix3d A   = Eigen::Matrix3d::Identity();
       Eigen::Matrix3d B   = Eigen::Matrix3d::Zero();
