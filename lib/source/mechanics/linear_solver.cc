@@ -1,3 +1,6 @@
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
@@ -19,7 +22,29 @@ namespace softgrasp
   {
   }
 
-  LinearSolver::~LinearSolver() = default;
+  /// The linear problem MUMPS factorised last, and the solver that holds
+  /// its symbolic factorisation (for the matrix object @p matrix).
+  struct LinearSolver::DirectState
+  {
+    Epetra_LinearProblem               problem;
+    std::unique_ptr<Amesos_BaseSolver> solver;
+    const Epetra_CrsMatrix            *matrix = nullptr;
+  };
+
+  LinearSolver::~LinearSolver()
+  {
+    abandon_factorization(); // never a collective call in a destructor
+  }
+
+  void LinearSolver::forget_factorization()
+  {
+    direct.reset();
+  }
+
+  void LinearSolver::abandon_factorization()
+  {
+    (void)direct.release(); // deliberately not freed, see the header
+  }
 
   void LinearSolver::set_rigid_body_modes(
       const std::vector<TrilinosWrappers::MPI::Vector> &rigid_body_modes)
@@ -45,6 +70,56 @@ namespace softgrasp
   } // namespace
 
   LinearSolver::Result
+  LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &A,
+                             TrilinosWrappers::MPI::Vector        &x,
+                             const TrilinosWrappers::MPI::Vector  &b)
+  {
+    // MUMPS (multifrontal, nested-dissection ordering) scales far better
+    // than KLU on 3D meshes; Debian's Trilinos is built with it.
+    Result result;
+    result.iterations              = 1;
+    const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
+    if (!parameters.reuse_symbolic_factorization ||
+        (direct && direct->matrix != &matrix))
+      direct.reset();
+    int status = 0;
+    if (!direct)
+    {
+      direct = std::make_unique<DirectState>();
+      direct->problem.SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix));
+      direct->matrix = &matrix;
+      Amesos factory;
+      direct->solver.reset(factory.Create("Amesos_Mumps", direct->problem));
+      AssertThrow(direct->solver != nullptr,
+                  ExcMessage("Trilinos was built without Amesos_Mumps."));
+      status = direct->solver->SymbolicFactorization();
+    }
+    direct->problem.SetLHS(&x.trilinos_vector());
+    direct->problem.SetRHS(
+        const_cast<Epetra_MultiVector *>(&b.trilinos_vector()));
+    if (status == 0)
+      status = direct->solver->NumericFactorization();
+    if (status == 0)
+      status = direct->solver->Solve();
+    // x and b belong to the caller: keep no pointers to them.
+    direct->problem.SetLHS(static_cast<Epetra_MultiVector *>(nullptr));
+    direct->problem.SetRHS(static_cast<Epetra_MultiVector *>(nullptr));
+    if (status != 0)
+    {
+      // A singular or otherwise failed factorisation (MUMPS reports it on
+      // every rank): the Newton step fails and the load step is cut back.
+      direct.reset();
+      result.breakdown = "the direct solver (MUMPS) failed with Amesos "
+                         "error " +
+                         std::to_string(status) +
+                         " (singular or badly scaled matrix)";
+      return result;
+    }
+    result.converged = true;
+    return finite_or_breakdown(x, result);
+  }
+
+  LinearSolver::Result
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,
@@ -53,30 +128,7 @@ namespace softgrasp
     Result result;
     x = 0;
     if (parameters.type == LinearSolverType::direct)
-    {
-      SolverControl control(1, 0, false, false);
-      // MUMPS (multifrontal, nested-dissection ordering) scales far better
-      // than KLU on 3D meshes; Debian's Trilinos is built with it.
-      TrilinosWrappers::SolverDirect direct(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         "Amesos_Mumps"));
-      result.iterations = 1;
-      try
-      {
-        direct.solve(A, x, b);
-        result.converged = true;
-      }
-      catch (const std::exception &e)
-      {
-        // A singular or otherwise failed factorisation (MUMPS reports it on
-        // every rank): the Newton step fails and the load step is cut back.
-        result.breakdown =
-            "the direct solver (MUMPS) failed: " + error_message(e);
-        return result;
-      }
-      return finite_or_breakdown(x, result);
-    }
+      return solve_direct(A, x, b);
 
     // ML parameters (as deal.II's PreconditionAMG for elliptic problems),
     // with the rigid-body modes as pre-computed near null space.

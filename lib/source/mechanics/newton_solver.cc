@@ -19,6 +19,17 @@ namespace softgrasp
   typename NewtonSolver<dim>::Result
   NewtonSolver<dim>::solve(SolidSystem<dim> &system) const
   {
+    const Result result = iterate(system);
+    // Collective on every rank, in the normal flow of the run: MUMPS'
+    // symbolic factorisation lives for one load step.
+    system.release_factorization();
+    return result;
+  }
+
+  template <int dim>
+  typename NewtonSolver<dim>::Result
+  NewtonSolver<dim>::iterate(SolidSystem<dim> &system) const
+  {
     Result                        result;
     auto                         &u         = system.solution();
     double                        violation = system.update_constraints();

@@ -34,6 +34,16 @@ namespace softgrasp
   {
   }
 
+  template <int dim> SolidSystem<dim>::~SolidSystem()
+  {
+    linear_solver.abandon_factorization();
+  }
+
+  template <int dim> void SolidSystem<dim>::release_factorization()
+  {
+    linear_solver.forget_factorization();
+  }
+
   template <int dim> void SolidSystem<dim>::setup()
   {
     TimerOutput::Scope scope(timer, "setup");
@@ -58,6 +68,7 @@ namespace softgrasp
                                       Utilities::MPI::this_mpi_process(comm));
       sparsity.compress();
       tangent.reinit(sparsity);
+      linear_solver.forget_factorization();
     }
     else
       tangent.clear();
@@ -218,8 +229,7 @@ namespace softgrasp
     using CellFilter = FilteredIterator<Iterator>;
     auto worker      = [&](const Iterator           &cell,
                       AssemblyScratchData<dim> &scratch,
-                      AssemblyCopyData         &copy)
-    {
+                      AssemblyCopyData         &copy) {
       assembler.assemble(cell, u_ghosted, with_matrix, inertia, scratch, copy);
     };
     auto copier = [&](const AssemblyCopyData &copy)
@@ -324,10 +334,10 @@ namespace softgrasp
   {
     TrilinosWrappers::MPI::Vector mass;
     mass.reinit(owned, relevant, communicator(), /*vector_writable=*/true);
-    FEValues<dim>                 fe_values(reference_mapping,
-                                finite_element,
-                                quadrature,
-                                update_values | update_JxW_values);
+    FEValues<dim>                        fe_values(reference_mapping,
+                            finite_element,
+                            quadrature,
+                            update_values | update_JxW_values);
     std::vector<types::global_dof_index> indices(
         finite_element.n_dofs_per_cell());
     Vector<double> local;

@@ -14,11 +14,10 @@ namespace softgrasp
     const std::vector<std::pair<std::string, Formulation>> formulation_names = {
         {"displacement", Formulation::displacement},
         {"mixed u-p-J", Formulation::mixed_upJ}};
-    const std::vector<std::pair<std::string, TimeIntegrator>>
-        integrator_names = {
-            {"quasi-static", TimeIntegrator::quasi_static},
-            {"implicit dynamic", TimeIntegrator::implicit_dynamic},
-            {"explicit dynamic", TimeIntegrator::explicit_dynamic}};
+    const std::vector<std::pair<std::string, TimeIntegrator>> integrator_names =
+        {{"quasi-static", TimeIntegrator::quasi_static},
+         {"implicit dynamic", TimeIntegrator::implicit_dynamic},
+         {"explicit dynamic", TimeIntegrator::explicit_dynamic}};
     const std::vector<std::pair<std::string, LinearSolverType>> solver_names = {
         {"direct", LinearSolverType::direct},
         {"iterative", LinearSolverType::iterative}};
@@ -221,17 +220,26 @@ namespace softgrasp
                       "2",
                       Patterns::Integer(1, 10),
                       "Degree of the Chebyshev smoother of ML. Unit: 1.");
+    prm.declare_entry(
+        "Reuse symbolic factorization",
+        "true",
+        Patterns::Bool(),
+        "Direct solver: compute MUMPS' fill-reducing ordering and symbolic "
+        "factorisation at the first Newton iteration of a load step and "
+        "redo only the numeric factorisation in the iterations that follow. "
+        "'false' redoes both at every Newton iteration (for comparison).");
     prm.leave_subsection();
   }
 
   void LinearSolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    type                  = lookup(solver_names, prm.get("Type"));
-    relative_tolerance    = prm.get_double("Relative tolerance");
-    max_iterations        = prm.get_integer("Maximum iterations");
-    aggregation_threshold = prm.get_double("AMG aggregation threshold");
-    smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+    type                         = lookup(solver_names, prm.get("Type"));
+    relative_tolerance           = prm.get_double("Relative tolerance");
+    max_iterations               = prm.get_integer("Maximum iterations");
+    aggregation_threshold        = prm.get_double("AMG aggregation threshold");
+    reuse_symbolic_factorization = prm.get_bool("Reuse symbolic factorization");
+    smoother_sweeps              = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
   }
 

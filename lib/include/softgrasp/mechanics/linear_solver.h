@@ -43,6 +43,15 @@ namespace softgrasp
     void set_rigid_body_modes(
         const std::vector<dealii::TrilinosWrappers::MPI::Vector> &modes);
 
+    /// The sparsity pattern of the matrices to come differs from the last
+    /// one's: the direct solver's symbolic factorisation is redone.
+    void forget_factorization();
+
+    /// Drop the direct solver's state without freeing it (MUMPS' cleanup
+    /// is collective): for a destructor that may run on one rank only
+    /// while an error unwinds; the memory goes with the process.
+    void abandon_factorization();
+
     /// Solve A x = b; @p symmetric selects CG over GMRES.
     Result solve(const dealii::TrilinosWrappers::SparseMatrix &A,
                  dealii::TrilinosWrappers::MPI::Vector        &x,
@@ -50,7 +59,14 @@ namespace softgrasp
                  const bool                                    symmetric);
 
   private:
+    /// MUMPS through Amesos, keeping its symbolic factorisation.
+    Result solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
+                        dealii::TrilinosWrappers::MPI::Vector        &x,
+                        const dealii::TrilinosWrappers::MPI::Vector  &b);
+
+    struct DirectState; ///< the Amesos problem and solver
     LinearSolverParameters                             parameters;
+    std::unique_ptr<DirectState>                       direct;
     std::vector<dealii::TrilinosWrappers::MPI::Vector> modes;
     std::unique_ptr<Epetra_MultiVector>                null_space;
   };

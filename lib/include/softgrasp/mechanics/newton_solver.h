@@ -40,6 +40,9 @@ namespace softgrasp
     Result solve(SolidSystem<dim> &system) const;
 
   private:
+    /// The iterations of solve().
+    Result iterate(SolidSystem<dim> &system) const;
+
     const NewtonParameters      parameters;
     dealii::ConditionalOStream &log;
   };

@@ -49,6 +49,12 @@ namespace softgrasp
                 const unsigned int   mapping_degree,
                 dealii::TimerOutput &timer);
 
+    /// Abandons (does not free) a direct factorisation still held: freeing
+    /// it is collective, and a destructor may run on one rank only while
+    /// an error unwinds. In the normal flow release_factorization() has
+    /// freed it.
+    ~SolidSystem();
+
     /// Distribute dofs and size matrix and vectors (the solution is zeroed).
     void setup();
 
@@ -73,6 +79,10 @@ namespace softgrasp
     /// The row-sum lumped mass per dof (kg; kg/m in 2D), owned entries;
     /// the same masses as the inertia term. Collective.
     dealii::TrilinosWrappers::MPI::Vector lumped_mass() const;
+
+    /// Free the direct solver's factorisation (MUMPS keeps its symbolic
+    /// factorisation between the solves of one Newton solve). Collective.
+    void release_factorization();
 
     /// Solve K du = -r with the last assembled system; du obeys constraints.
     LinearSolver::Result solve(dealii::TrilinosWrappers::MPI::Vector &du);

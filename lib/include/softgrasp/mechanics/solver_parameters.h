@@ -89,6 +89,9 @@ namespace softgrasp
     unsigned int     max_iterations        = 2000;
     double           aggregation_threshold = 1e-4; ///< ML AMG; 1
     unsigned int     smoother_sweeps       = 2;    ///< ML AMG Chebyshev degree
+    /// direct: keep MUMPS' ordering and symbolic factorisation over the
+    /// Newton iterations of a load step (only the numeric one is redone)
+    bool reuse_symbolic_factorization = true;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
