@@ -39,6 +39,69 @@
 #include <iostream>
 #include <softgrasp/mechanics/mechanics_solver.h>
 #include <softgrasp/mechanics/solver_program.h>
+#include <softgrasp/postprocess/contact_force_report.h>
+#include <string>
+
+namespace
+{
+  /// Why Hertz's formula does not apply to the run's set-up, or "".
+  std::string hertz_mismatch(const softgrasp::MechanicsSolver<3> &solver)
+  {
+    const auto &bodies = solver.rigid_bodies().bodies();
+    if (bodies.size() != 1 || bodies[0].geoms().size() != 1)
+      return "it needs exactly one rigid body with one geom";
+    if (bodies[0].geoms()[0].shape->type() != "sphere")
+      return "the geom is a " + bodies[0].geoms()[0].shape->type() +
+             ", not a sphere";
+    if (solver.materials().material_ids().size() != 1)
+      return "it needs one material (the file has " +
+             std::to_string(solver.materials().material_ids().size()) + ")";
+    if (solver.contact_force_history().size() < 2)
+      return "fewer than two steps were recorded";
+    return "";
+  }
+
+  /// Compare the force on the sphere with Hertz's, if the set-up is his.
+  void report(const softgrasp::MechanicsSolver<3> &solver)
+  {
+    softgrasp::report_contact_forces(solver, "hertz_forces", std::cout);
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    const std::string mismatch = hertz_mismatch(solver);
+    if (!mismatch.empty())
+    {
+      std::cout << "\nNo comparison with Hertz: " << mismatch << '.'
+                << std::endl;
+      return;
+    }
+    // Hertz's values from the problem's own parameters: the sphere's
+    // radius, the depth from its trajectory (first to last sample), E and
+    // nu from the material.
+    const auto  &body       = solver.rigid_bodies().bodies()[0];
+    const double R          = body.geoms()[0].shape->bounding_radius();
+    const auto  &trajectory = body.trajectory();
+    const double d = trajectory.pose(trajectory.times().front()).position[2] -
+                     trajectory.pose(trajectory.times().back()).position[2];
+    const auto &material =
+        solver.materials().get(solver.materials().material_ids()[0]);
+    const double mu    = material.initial_shear_modulus();
+    const double kappa = material.bulk_modulus();
+    const double E     = 9 * kappa * mu / (3 * kappa + mu);
+    const double nu    = (3 * kappa - 2 * mu) / (2 * (3 * kappa + mu));
+    const double F_hertz =
+        4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R) * std::pow(d, 1.5);
+
+    // hertz_indentation.prm models a quarter of the problem (symmetry planes
+    // x = 0 and y = 0): 4 times the force on the ball.
+    const double F =
+        4 * solver.contact_force_history().back().forces[0][0].normal_force();
+    std::cout << "\nIndentation d = " << d * 1e3 << " mm by R = " << R * 1e3
+              << " mm: force " << F * 1e3 << " mN, Hertz " << F_hertz * 1e3
+              << " mN (" << std::showpos << 100 * (F / F_hertz - 1)
+              << std::noshowpos << " %); Hertz contact radius "
+              << std::sqrt(R * d) * 1e3 << " mm." << std::endl;
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
@@ -47,32 +110,6 @@ main(int argc, char **argv)
 
   softgrasp::SolverProgram program;
   program.default_parameter_file = "hertz_indentation.prm";
-  program.report_3d = [](const softgrasp::MechanicsSolver<3> &solver)
-  {
-    // Hertz's values from the problem's own parameters: the sphere's
-    // radius, the depth from its trajectory, E and nu from the material.
-    const auto  &body = solver.contact()->rigid_bodies().bodies()[0];
-    const double R    = body.geoms()[0].shape->bounding_radius();
-    const double d    = body.trajectory().pose(0).position[2] -
-                     body.trajectory().pose(1).position[2];
-    const auto  &material = solver.materials().get(0);
-    const double mu       = material.initial_shear_modulus();
-    const double kappa    = material.bulk_modulus();
-    const double E        = 9 * kappa * mu / (3 * kappa + mu);
-    const double nu       = (3 * kappa - 2 * mu) / (2 * (3 * kappa + mu));
-    const double F_hertz =
-        4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R) * std::pow(d, 1.5);
-
-    // The model is a quarter of the problem: 4 times the force on the ball.
-    const auto  &history = solver.contact_history();
-    const double F       = 4 * history.value(history.rows.size() - 1,
-                                       "indenter/ball:normal_force");
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << "\nIndentation d = " << d * 1e3 << " mm by R = " << R * 1e3
-                << " mm: force " << F * 1e3 << " mN, Hertz " << F_hertz * 1e3
-                << " mN (" << std::showpos << 100 * (F / F_hertz - 1)
-                << std::noshowpos << " %); Hertz contact radius "
-                << std::sqrt(R * d) * 1e3 << " mm." << std::endl;
-  };
+  program.report_3d              = report;
   return program.run(argc, argv);
 }

@@ -29,8 +29,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/mechanics/mechanics_solver.h>
 #include <softgrasp/mechanics/solver_program.h>
+#include <softgrasp/postprocess/contact_force_report.h>
 
 int
 main(int argc, char **argv)
@@ -40,18 +40,8 @@ main(int argc, char **argv)
   softgrasp::SolverProgram program;
   program.default_parameter_file = "ironing.prm";
   program.report_2d = [](const softgrasp::MechanicsSolver<2> &solver)
-  {
-    const auto       &history  = solver.contact_history();
-    const std::size_t last     = history.rows.size() - 1;
-    const std::string geom     = "iron/roller:";
-    const double      N        = history.value(last, geom + "normal_force");
-    const double      lateral  = history.value(last, geom + "lateral_force");
-    const double      friction = history.value(last, geom + "friction_force");
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << "\nAt the end of the drag, per metre of roller: normal "
-                << "force " << N << " N/m, lateral force " << lateral
-                << " N/m (" << lateral / N << " of the normal force), of "
-                << "which friction alone " << friction << " N/m." << std::endl;
-  };
+  { softgrasp::report_contact_forces(solver, "ironing_forces", std::cout); };
+  program.report_3d = [](const softgrasp::MechanicsSolver<3> &solver)
+  { softgrasp::report_contact_forces(solver, "ironing_forces", std::cout); };
   return program.run(argc, argv);
 }

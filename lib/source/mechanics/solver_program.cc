@@ -72,8 +72,11 @@ namespace softgrasp
                        "--print-parameters prints every parameter with its "
                        "documentation (with a file: including the file's "
                        "subsections and values).\n"
-                       "Default parameter file: "
-                    << default_parameter_file << std::endl;
+                    << (default_parameter_file.empty()
+                            ? "A parameter file must be given."
+                            : "Default parameter file: " +
+                                  default_parameter_file)
+                    << std::endl;
         return 0;
       }
       else
@@ -81,6 +84,14 @@ namespace softgrasp
         filename   = arg;
         file_given = true;
       }
+    }
+    if (filename.empty() && !print_parameters)
+    {
+      if (root)
+        std::cerr << "Error: no parameter file given.\nFix: run " << argv[0]
+                  << " file.prm (see " << argv[0]
+                  << " --print-parameters for every entry)." << std::endl;
+      return 1;
     }
     const ErrorCommunicator error_comm(comm);
     try

@@ -1,0 +1,20 @@
+// The softgrasp program: runs any problem a .prm file describes and reports
+// the contact forces on every rigid body and geom. See doc/softgrasp.md.
+
+#include <deal.II/base/mpi.h>
+#include <iostream>
+#include <softgrasp/mechanics/solver_program.h>
+#include <softgrasp/postprocess/contact_force_report.h>
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  softgrasp::SolverProgram program;
+  program.report_2d = [](const softgrasp::MechanicsSolver<2> &solver)
+  { softgrasp::report_contact_forces(solver, "contact_forces", std::cout); };
+  program.report_3d = [](const softgrasp::MechanicsSolver<3> &solver)
+  { softgrasp::report_contact_forces(solver, "contact_forces", std::cout); };
+  return program.run(argc, argv);
+}
