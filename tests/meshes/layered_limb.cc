@@ -6,6 +6,7 @@
 // skin vertices on the true ellipse, and bad input is refused with a
 // message naming the entry.
 #include "../tests.h"
+#include "measure.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_nothing.h>
@@ -19,6 +20,7 @@
 
 using namespace dealii;
 using namespace softgrasp;
+using namespace softgrasp_tests;
 
 namespace
 {
@@ -32,48 +34,6 @@ namespace
     MeshFactory<3> factory;
     factory.parse_parameters(prm);
     return factory;
-  }
-
-  /// Volume per material id and area per boundary id (MappingQ(2)).
-  void measure(const Triangulation<3>         &tria,
-               std::map<unsigned int, double> &volume,
-               std::map<unsigned int, double> &area)
-  {
-    const MappingQ<3>   mapping(2);
-    const QGauss<3>     quadrature(4);
-    const QGauss<2>     face_quadrature(4);
-    const FE_Nothing<3> fe;
-    FEValues<3>         values(mapping, fe, quadrature, update_JxW_values);
-    FEFaceValues<3>     face_values(
-        mapping, fe, face_quadrature, update_JxW_values);
-    for (const auto &cell : tria.active_cell_iterators())
-    {
-      values.reinit(cell);
-      for (unsigned int q = 0; q < quadrature.size(); ++q)
-        volume[cell->material_id()] += values.JxW(q);
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-        {
-          face_values.reinit(cell, f);
-          for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-            area[cell->face(f)->boundary_id()] += face_values.JxW(q);
-        }
-    }
-  }
-
-  /// The largest |measured - exact| / exact over the ids of @p exact.
-  double largest_relative_error(const std::map<unsigned int, double> &measured,
-                                const std::map<unsigned int, double> &exact)
-  {
-    double worst = 0;
-    for (const auto &[id, value] : exact)
-    {
-      const auto it = measured.find(id);
-      worst         = std::max(
-          worst,
-          it == measured.end() ? 1.0 : std::abs(it->second - value) / value);
-    }
-    return worst;
   }
 
   /// The coarse mesh of @p factory, refined @p refinement times.

@@ -1,4 +1,5 @@
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/meshes/ball_mesh.h>
@@ -31,6 +32,17 @@ namespace softgrasp
                       Patterns::Selection("6|12|24|48|96"),
                       "Coarse cells of the shell around a core (3D: 6, 12, "
                       "24, 48 or 96; 2D: any). Unit: 1.");
+    prm.declare_entry(
+        "Sector",
+        "full",
+        dim == 3 ? Patterns::Selection("full|half|quarter|octant")
+                 : Patterns::Selection("full|half|quarter"),
+        "The part of the ball to mesh, for symmetric models: full; half "
+        "(x >= c, with c the centre); quarter (x, y >= c); octant (x, y, "
+        "z >= c; 3D). The cut planes x = c, y = c, z = c get boundary ids "
+        "2, 3, 4: fix the normal component there for a symmetry plane. A "
+        "part's shell has the cells of deal.II's quarter_hyper_shell, "
+        "mirrored ('Shell cells' applies to the full shell).");
     prm.leave_subsection();
   }
 
@@ -41,6 +53,7 @@ namespace softgrasp
     radius      = prm.get_double("Radius");
     core_radius = prm.get_double("Core radius");
     shell_cells = prm.get_integer("Shell cells");
+    sector      = prm.get("Sector");
     prm.leave_subsection();
     if (!(radius > 0))
       throw InputError("'Mesh/Ball/Radius' must be positive. Fix: give the "
@@ -58,7 +71,9 @@ namespace softgrasp
   void
   BallMesh<dim>::create_coarse_mesh(Triangulation<dim> &triangulation) const
   {
-    if (core_radius > 0)
+    if (sector != "full")
+      create_sector(triangulation);
+    else if (core_radius > 0)
     {
       // hyper_shell: 0 inner, 1 outer; softgrasp: 0 outer, 1 core.
       GridGenerator::hyper_shell(
@@ -72,10 +87,118 @@ namespace softgrasp
       GridGenerator::hyper_ball_balanced(triangulation, center, radius);
   }
 
+  namespace
+  {
+    constexpr types::manifold_id sphere_manifold_id = 0;
+    constexpr types::manifold_id inner_manifold_id  = 1;
+
+    /// Append the mirror image of the mesh (@p vertices, @p cells) at the
+    /// plane x_axis = c; the caller merges the shared vertices.
+    template <int dim>
+    void mirror(std::vector<Point<dim>>    &vertices,
+                std::vector<CellData<dim>> &cells,
+                const unsigned int          axis,
+                const double                c)
+    {
+      const unsigned int n_vertices = vertices.size();
+      const unsigned int n_cells    = cells.size();
+      for (unsigned int v = 0; v < n_vertices; ++v)
+      {
+        Point<dim> p = vertices[v];
+        p[axis]      = 2 * c - p[axis];
+        vertices.push_back(p);
+      }
+      for (unsigned int k = 0; k < n_cells; ++k)
+      {
+        CellData<dim> cell = cells[k];
+        for (auto &v : cell.vertices)
+          v += n_vertices;
+        cells.push_back(cell);
+      }
+    }
+  } // namespace
+
+  template <int dim>
+  void BallMesh<dim>::create_sector(Triangulation<dim> &triangulation) const
+  {
+    Triangulation<dim> orthant;
+    if (core_radius > 0)
+      GridGenerator::quarter_hyper_shell(orthant, center, core_radius, radius);
+    else
+      GridGenerator::quarter_hyper_ball(orthant, center, radius);
+    auto [vertices, cells, subcells] =
+        GridTools::get_coarse_mesh_description(orthant);
+    // planes to mirror at: 3D octant -> quarter (z) -> half (y)
+    std::vector<unsigned int> axes;
+    if (dim == 3 && sector != "octant")
+      axes.push_back(2);
+    if (sector == "half")
+      axes.push_back(1);
+    for (const unsigned int axis : axes)
+      mirror(vertices, cells, axis, center[axis]);
+    for (auto &cell : cells)
+      cell.manifold_id = numbers::flat_manifold_id;
+    SubCellData               no_subcells;
+    std::vector<unsigned int> all_vertices;
+    GridTools::delete_duplicated_vertices(
+        vertices, cells, no_subcells, all_vertices, 1e-10 * radius);
+    GridTools::invert_cells_with_negative_measure(vertices, cells);
+    GridTools::consistently_order_cells(cells);
+    triangulation.create_triangulation(vertices, cells, no_subcells);
+
+    // Ids by position: cut planes 2 + axis, the core 1, the sphere 0.
+    const double tol = 1e-8 * radius;
+    triangulation.set_all_manifold_ids(core_radius > 0 ? sphere_manifold_id
+                                                       : inner_manifold_id);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+      {
+        if (!face->at_boundary())
+          continue;
+        const Point<dim> x        = face->center();
+        bool             on_plane = false;
+        for (unsigned int d = 0; d < dim && !on_plane; ++d)
+        {
+          bool all_on = true;
+          for (const unsigned int v : face->vertex_indices())
+            all_on = all_on && std::abs(face->vertex(v)[d] - center[d]) < tol;
+          if (all_on)
+          {
+            face->set_boundary_id(2 + d);
+            if (core_radius == 0)
+              face->set_manifold_id(numbers::flat_manifold_id);
+            on_plane = true;
+          }
+        }
+        if (on_plane)
+          continue;
+        const bool on_core = core_radius > 0 &&
+                             x.distance(center) < 0.5 * (core_radius + radius);
+        face->set_boundary_id(on_core ? 1 : 0);
+      }
+    if (core_radius == 0)
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == 0)
+            face->set_all_manifold_ids(sphere_manifold_id);
+  }
+
   template <int dim>
   void BallMesh<dim>::attach_manifolds(Triangulation<dim>   &triangulation,
                                        const Placement<dim> &placement) const
   {
+    if (sector != "full")
+    {
+      triangulation.set_manifold(sphere_manifold_id,
+                                 SphericalManifold<dim>(placement(center)));
+      if (core_radius == 0)
+      {
+        TransfiniteInterpolationManifold<dim> inner;
+        inner.initialize(triangulation);
+        triangulation.set_manifold(inner_manifold_id, inner);
+      }
+      return;
+    }
     if (placement.is_identity())
       return; // the generator's own manifolds are in place
     // Both generators put a spherical manifold about the centre on id 0;

@@ -14,22 +14,6 @@ namespace softgrasp
   {
     constexpr types::manifold_id limb_manifold_id = 0;
     constexpr types::manifold_id core_manifold_id = 1;
-
-    /// Cells of a geometric progression (first size @p h, ratio @p g)
-    /// that fill @p distance.
-    unsigned int
-    cells_to_fill(const double distance, const double h, const double g)
-    {
-      unsigned int n   = 0;
-      double       sum = 0, size = h;
-      while (sum < distance * (1 - 1e-9) && n < 1000)
-      {
-        size *= g;
-        sum += size;
-        ++n;
-      }
-      return std::max(n, 1u);
-    }
   } // namespace
 
   void LayeredLimb::declare_parameters(ParameterHandler &prm)
@@ -185,34 +169,13 @@ namespace softgrasp
 
   std::vector<double> LayeredLimb::axial_nodes() const
   {
-    const double        L = geometry.length, h = zone_length / zone_cells;
-    const double        begin = zone_center - zone_length / 2;
-    const double        end   = zone_center + zone_length / 2;
-    std::vector<double> x;
-    if (begin > -L / 2 + 1e-9 * L)
-    {
-      const auto left =
-          geometric_division(begin,
-                             -L / 2,
-                             cells_to_fill(begin + L / 2, h, axial_growth),
-                             axial_growth);
-      x.assign(left.rbegin(), left.rend());
-      x.pop_back();
-    }
-    const auto zone = geometric_division(begin, end, zone_cells, 1);
-    x.insert(x.end(), zone.begin(), zone.end());
-    if (end < L / 2 - 1e-9 * L)
-    {
-      const auto right =
-          geometric_division(end,
-                             L / 2,
-                             cells_to_fill(L / 2 - end, h, axial_growth),
-                             axial_growth);
-      x.insert(x.end(), right.begin() + 1, right.end());
-    }
-    x.front() = -L / 2;
-    x.back()  = L / 2;
-    return x;
+    const double L = geometry.length;
+    return zoned_division(-L / 2,
+                          L / 2,
+                          zone_center - zone_length / 2,
+                          zone_center + zone_length / 2,
+                          zone_cells,
+                          axial_growth);
   }
 
   namespace

@@ -22,6 +22,55 @@ namespace softgrasp
     return x;
   }
 
+  namespace
+  {
+    /// Cells of a geometric progression (first size @p h * @p g, ratio
+    /// @p g) that fill @p distance.
+    unsigned int
+    cells_to_fill(const double distance, const double h, const double g)
+    {
+      unsigned int n   = 0;
+      double       sum = 0, size = h;
+      while (sum < distance * (1 - 1e-9) && n < 1000)
+      {
+        size *= g;
+        sum += size;
+        ++n;
+      }
+      return std::max(n, 1u);
+    }
+  } // namespace
+
+  std::vector<double> zoned_division(const double       a,
+                                     const double       b,
+                                     const double       zone_begin,
+                                     const double       zone_end,
+                                     const unsigned int zone_cells,
+                                     const double       growth)
+  {
+    const double        h   = (zone_end - zone_begin) / zone_cells;
+    const double        tol = 1e-9 * (b - a);
+    std::vector<double> x;
+    if (zone_begin > a + tol)
+    {
+      const auto left = geometric_division(
+          zone_begin, a, cells_to_fill(zone_begin - a, h, growth), growth);
+      x.assign(left.rbegin(), left.rend());
+      x.pop_back();
+    }
+    const auto zone = geometric_division(zone_begin, zone_end, zone_cells, 1);
+    x.insert(x.end(), zone.begin(), zone.end());
+    if (zone_end < b - tol)
+    {
+      const auto right = geometric_division(
+          zone_end, b, cells_to_fill(b - zone_end, h, growth), growth);
+      x.insert(x.end(), right.begin() + 1, right.end());
+    }
+    x.front() = a;
+    x.back()  = b;
+    return x;
+  }
+
   template <int dim> std::string per_direction(const std::string &value)
   {
     return dim == 2 ? value + ", " + value

@@ -7,8 +7,9 @@ namespace softgrasp
 {
   /**
    * 'Mesh/Type = block': an axis-parallel box of hexahedra (quadrilaterals
-   * in 2D), optionally graded per direction. Boundary ids 0/1 at x min/max,
-   * 2/3 at y min/max, 4/5 at z min/max.
+   * in 2D), optionally graded per direction, or with a fine zone of
+   * uniform cells (e.g. under a contact) and geometric growth away from
+   * it. Boundary ids 0/1 at x min/max, 2/3 at y min/max, 4/5 at z min/max.
    */
   template <int dim> class BlockMesh : public MeshGenerator<dim>
   {
@@ -21,6 +22,11 @@ namespace softgrasp
     dealii::Point<dim>        lower, upper; ///< m
     std::vector<unsigned int> subdivisions; ///< per direction
     std::vector<double>       grading;      ///< size ratio of neighbours, 1
+    /// Corners of the fine zone (m); empty if there is none.
+    std::vector<dealii::Point<dim>> fine_zone;
+
+    /// The cell boundaries along direction @p d (m).
+    std::vector<double> divisions(const unsigned int d) const;
   };
 } // namespace softgrasp
 

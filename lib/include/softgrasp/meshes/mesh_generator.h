@@ -96,6 +96,19 @@ namespace softgrasp
                                          const unsigned int n,
                                          const double       ratio);
 
+  /**
+   * The cell boundaries of [a, b] with a zone [zone_begin, zone_end] of
+   * @p zone_cells uniform cells (size h) and, on each side of it, cells
+   * that grow by @p growth (>= 1) from h towards a and b; as many as fill
+   * the rest (the outermost are scaled to end exactly at a and b).
+   */
+  std::vector<double> zoned_division(const double       a,
+                                     const double       b,
+                                     const double       zone_begin,
+                                     const double       zone_end,
+                                     const unsigned int zone_cells,
+                                     const double       growth);
+
   /// "v, v[, v]": a default with one value per coordinate direction.
   template <int dim> std::string per_direction(const std::string &value);
 
