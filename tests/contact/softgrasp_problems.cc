@@ -1,8 +1,10 @@
 // The problems shipped with the softgrasp program, run from their own .prm
 // files: the sphere pressed into a block with a fine zone gives Hertz's
-// force (within 2 %), and the tube drag without friction gives no drag: a
-// frictionless finger sliding along a straight tube meets the same tissue
-// everywhere (translation invariance), so the force along the tube is a
+// force (within 2 %), its patch-mean reference normal is not tilted by
+// the symmetry planes of the quarter model, a reference normal in the
+// geom's frame turns with the geom, and the tube drag without friction gives no
+// drag: a frictionless finger sliding along a straight tube meets the same
+// tissue everywhere (translation invariance), so the force along the tube is a
 // discretisation error that falls under refinement, while the normal force
 // stays constant.
 #include "../solver_factory.h"
@@ -53,6 +55,33 @@ namespace
              "the reference normal -z gives the vertical force");
   }
 
+  /// The reference normal of the sphere pressed into the block, set as
+  /// @p choice (and the sphere turned by @p orientation, which does not
+  /// change its contact), after half the indentation: the normal and the
+  /// normal force.
+  std::pair<Eigen::Vector3d, double>
+  reference_normal(const std::string &choice, const std::string &orientation)
+  {
+    auto solver = make_solver<3>(
+        problem("sphere_into_block.prm",
+                "subsection Rigid bodies\n subsection Body indenter\n"
+                "  subsection Geom sphere\n   set Reference normal = " +
+                    choice + "\n   set Orientation = " + orientation +
+                    "\n  end\n end\nend\n"
+                    "subsection Time\n set End time = 0.5\nend\n"
+                    "subsection Output\n set Directory = out-normal\n"
+                    " set VTU interval = 0\n set Verbose = false\nend\n"));
+    solver->run();
+    const auto &f = solver->contact_force_history().back().forces[0][0];
+    dealii::deallog << "Reference normal '" << choice << "': n = ("
+                    << f.normal[0] << ", " << f.normal[1] << ", " << f.normal[2]
+                    << "), normal force " << f.normal_force()
+                    << " N, vertical force " << f.force[2] << " N" << std::endl;
+    SG_CHECK(close(f.normal_force(), f.force[2], 1e-12),
+             "the normal force is the vertical force");
+    return {f.normal, f.normal_force()};
+  }
+
   /// The largest drag along the tube during a frictionless pull of 4 mm
   /// (0.5 mm steps, quasi-static) with @p axial_cells cells over the 40 mm
   /// fine zone, relative to the smallest normal force.
@@ -101,6 +130,14 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(3);
   sphere_into_block();
+  // The patch's mean normal with the symmetry planes x = 0 and y = 0
+  // removed is the whole model's (vertical); so is a normal fixed in the
+  // frame of the sphere turned by 90 degrees about x (its -y is world -z).
+  const auto mean = reference_normal("patch mean", "1, 0, 0, 0");
+  const auto geom = reference_normal("geom: 0, -1, 0", "1, 1, 0, 0");
+  SG_CHECK((mean.first - Eigen::Vector3d(0, 0, -1)).norm() < 1e-12 &&
+               (geom.first - Eigen::Vector3d(0, 0, -1)).norm() < 1e-12,
+           "both are the vertical");
   // The drag is a discretisation error: it depends on where the finger is
   // between nodes, and it falls when the axial cells are halved.
   const double coarse = frictionless_tube_drag(10);

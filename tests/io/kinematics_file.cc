@@ -104,8 +104,8 @@ main()
   SG_CHECK(worst < 1e-14, "geom poses at the sample times");
   SG_CHECK(set.bodies()[0].geoms()[0].shape->type() == "capsule",
            "capsules stay capsules");
-  SG_CHECK((*set.reference_normal(0, 0) - Eigen::Vector3d(0, 0.6, 0.8)).norm() <
-               1e-15,
+  SG_CHECK((set.reference_normal(0, 0).direction - Eigen::Vector3d(0, 0.6, 0.8))
+                   .norm() < 1e-15,
            "equilibrium normal as reference normal");
   dealii::deallog << "geom poses at the sample times, capsule geoms and the "
                   << "equilibrium normal: 1" << std::endl;
@@ -171,7 +171,7 @@ main()
               [](const std::string &f)
               {
                 // the indentation phase ends after the last sample (1.25 s)
-                KinematicsData data       = example_kinematics();
+                KinematicsData data     = example_kinematics();
                 data.phases[1].end_time = 2.0;
                 write_kinematics_file(data, f);
               }),

@@ -117,11 +117,16 @@ namespace softgrasp
     const auto                                &nodes  = contact.nodes();
     const auto                                &u = system.ghosted_solution();
     std::vector<std::vector<GeomContactForce>> result(bodies.size());
-    std::vector<std::vector<Eigen::Vector3d>>  mean_normal(bodies.size());
+    const auto &constraints = system.constraint_set();
+    // per geom: the area-weighted normal sum of its patch, and which
+    // symmetry planes (normal along axis c) its closed nodes touch
+    std::vector<std::vector<Eigen::Vector3d>> mean_normal(bodies.size());
+    std::vector<std::vector<Eigen::Vector3d>> symmetry(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
       result[b].resize(bodies[b].geoms().size());
       mean_normal[b].assign(bodies[b].geoms().size(), Eigen::Vector3d::Zero());
+      symmetry[b].assign(bodies[b].geoms().size(), Eigen::Vector3d::Zero());
     }
     for (unsigned int j = 0; j < nodes.size(); ++j)
     {
@@ -142,6 +147,16 @@ namespace softgrasp
       if (node.status == ContactStatus::slip)
         ++out.slipping;
       mean_normal[node.body][node.geom] += areas[j] * node.normal;
+      // a node with exactly one fixed component lies on a symmetry plane
+      unsigned int fixed = 0, axis = 0;
+      for (unsigned int c = 0; c < dim; ++c)
+        if (constraints.is_constrained(node.dofs[c]))
+        {
+          ++fixed;
+          axis = c;
+        }
+      if (fixed == 1)
+        symmetry[node.body][node.geom][axis] = 1;
     }
     const MPI_Comm comm = system.communicator();
     const auto     sum  = [&](Eigen::Vector3d &v)
@@ -158,18 +173,49 @@ namespace softgrasp
         sum(out.moment);
         sum(out.friction);
         sum(mean_normal[b][g]);
-        out.area         = Utilities::MPI::sum(out.area, comm);
-        out.active       = Utilities::MPI::sum(out.active, comm);
-        out.slipping     = Utilities::MPI::sum(out.slipping, comm);
-        const auto given = set.reference_normal(b, g);
-        if (given)
-          out.normal = *given;
-        else if (mean_normal[b][g].norm() > 0)
-          out.normal = mean_normal[b][g].normalized();
+        sum(symmetry[b][g]);
+        out.area     = Utilities::MPI::sum(out.area, comm);
+        out.active   = Utilities::MPI::sum(out.active, comm);
+        out.slipping = Utilities::MPI::sum(out.slipping, comm);
+        out.normal =
+            reference_direction(b, g, mean_normal[b][g], symmetry[b][g]);
         out.normal_part  = out.normal * out.normal.dot(out.force);
         out.lateral_part = out.force - out.normal_part;
       }
     return result;
+  }
+
+  template <int dim>
+  Eigen::Vector3d ContactOutput<dim>::reference_direction(
+      const unsigned int     b,
+      const unsigned int     g,
+      const Eigen::Vector3d &normal_sum,
+      const Eigen::Vector3d &symmetry_planes) const
+  {
+    const auto &choice = contact.rigid_bodies().reference_normal(b, g);
+    switch (choice.kind)
+    {
+    case ReferenceNormal::Kind::world:
+      return choice.direction;
+    case ReferenceNormal::Kind::geom_frame:
+      return contact.rigid_bodies()
+                 .bodies()[b]
+                 .geom_pose(g, contact.time())
+                 .orientation *
+             choice.direction;
+    case ReferenceNormal::Kind::patch_mean:
+      break;
+    }
+    // The mirror images of the patch across the symmetry planes it touches
+    // cancel the normal sum's components across those planes.
+    Eigen::Vector3d mean = normal_sum;
+    for (unsigned int c = 0; c < 3; ++c)
+      if (symmetry_planes[c] > 0)
+        mean[c] = 0;
+    if (mean.norm() > 1e-12 * normal_sum.norm() && mean.norm() > 0)
+      return mean.normalized();
+    return normal_sum.norm() > 0 ? Eigen::Vector3d(normal_sum.normalized())
+                                 : Eigen::Vector3d::Zero();
   }
 
   template <int dim>

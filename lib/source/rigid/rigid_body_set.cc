@@ -111,13 +111,22 @@ namespace softgrasp
                         Patterns::Anything(),
                         "Orientation of the geom frame in the body frame, a "
                         "quaternion w, x, y, z (normalised on input).");
-      prm.declare_entry("Reference normal",
-                        "",
-                        Patterns::Anything(),
-                        "World direction n (unitless, normalised) for the "
-                        "split of the geom's contact force into normal "
-                        "(n n^T) and lateral (I - n n^T) parts. Empty: the "
-                        "mean normal of the geom's contact patch.");
+      prm.declare_entry(
+          "Reference normal",
+          "patch mean",
+          Patterns::Anything(),
+          "The direction n (unitless, normalised) that splits the geom's "
+          "contact force F into the normal part (n n^T) F and the lateral "
+          "part (I - n n^T) F; the normal force is -n.F. 'patch mean' (or "
+          "empty): the area-weighted mean normal of the geom's contact "
+          "patch, with the components across the symmetry planes the patch "
+          "touches removed, so that a part model gives the whole model's "
+          "split (a symmetry plane is a boundary where exactly one "
+          "displacement component is fixed); 'x, y, z': a fixed world "
+          "direction; 'geom: x, y, z': a direction in the geom's frame "
+          "that turns with the geom (e.g. the palm side of a finger link). "
+          "Studies that read a kinematics file use MuJoCo's equilibrium "
+          "contact normal (world).");
     }
 
     void declare_body(ParameterHandler &prm)
@@ -205,7 +214,7 @@ namespace softgrasp
         throw InputError("Rigid body '" + name + "' has no geoms. Fix: set '" +
                          path +
                          "/Geom names' and a subsection 'Geom <name>' each.");
-      std::vector<std::optional<Eigen::Vector3d>> body_normals;
+      std::vector<ReferenceNormal> body_normals;
       for (const auto &geom : geoms)
       {
         const std::string geom_path = path + "/Geom " + geom;
@@ -228,22 +237,8 @@ namespace softgrasp
         spec.mesh_file  = prm.get("Mesh file");
         spec.mesh_scale = prm.get_double("Mesh scale");
         body.add_geom(geom, create_shape(spec), local);
-        const std::string normal_text = prm.get("Reference normal");
-        if (normal_text.empty())
-          body_normals.emplace_back();
-        else
-        {
-          const Eigen::Vector3d n =
-              vector_in(normal_text,
-                        "Parameter '" + geom_path + "/Reference normal'",
-                        "a direction");
-          if (n.norm() < 1e-12)
-            throw InputError("Parameter '" + geom_path +
-                             "/Reference normal' is the zero vector. Fix: "
-                             "give a direction, or leave it empty for the "
-                             "patch's mean normal.");
-          body_normals.emplace_back(n.normalized());
-        }
+        body_normals.push_back(ReferenceNormal::parse(
+            prm.get("Reference normal"), geom_path + "/Reference normal"));
         prm.leave_subsection();
       }
       prm.leave_subsection();
@@ -267,14 +262,41 @@ namespace softgrasp
     if (normal.norm() < 1e-12 || !normal.allFinite())
       throw InputError("The reference normal of geom " + geom_label(b, g) +
                        " is zero or not finite. Fix: give a direction.");
-    normals.at(b).at(g) = normal.normalized();
+    normals.at(b).at(g) = {ReferenceNormal::Kind::world, normal.normalized()};
   }
 
-  std::optional<Eigen::Vector3d>
+  const ReferenceNormal &
   RigidBodySet::reference_normal(const unsigned int b,
                                  const unsigned int g) const
   {
     return normals.at(b).at(g);
+  }
+
+  ReferenceNormal ReferenceNormal::parse(const std::string &text,
+                                         const std::string &path)
+  {
+    const std::string trimmed = Utilities::trim(text);
+    if (trimmed.empty() || trimmed == "patch mean")
+      return {};
+    const bool        in_geom = trimmed.rfind("geom:", 0) == 0;
+    const std::string numbers = in_geom ? trimmed.substr(5) : trimmed;
+    Eigen::Vector3d   n;
+    try
+    {
+      n = vector_in(numbers, "Parameter '" + path + "'", "a direction");
+    }
+    catch (const InputError &e)
+    {
+      throw InputError(std::string(e.what()) +
+                       " The entry takes 'patch mean', a world direction "
+                       "'x, y, z' or a direction in the geom's frame "
+                       "'geom: x, y, z'.");
+    }
+    if (n.norm() < 1e-12)
+      throw InputError("Parameter '" + path +
+                       "' is the zero vector. Fix: give a direction, "
+                       "'geom: x, y, z', or 'patch mean'.");
+    return {in_geom ? Kind::geom_frame : Kind::world, n.normalized()};
   }
 
   const std::vector<RigidBody> &RigidBodySet::bodies() const

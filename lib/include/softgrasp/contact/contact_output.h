@@ -57,8 +57,9 @@ namespace softgrasp
   /**
    * Output of a ContactSurface (implicit or explicit contact): per geom and per
    * body force resultants with the normal/lateral split f_n = (n n^T) F, f_mu =
-   * (I - n n^T) F, where n is the geom's reference normal (given, or the
-   * area-weighted mean normal of its contact patch), rows for the contact
+   * (I - n n^T) F, where n is the geom's reference normal (ReferenceNormal:
+   * the patch mean corrected for symmetry planes, a world direction or one
+   * in the geom's frame), rows for the contact
    * history table, and surface fields for the VTU files: contact traction (Pa),
    * contact pressure (Pa), gap (m) and status (0 open, 1 stick, 2 slip).
    */
@@ -103,6 +104,15 @@ namespace softgrasp
     std::vector<double> current_areas(const SolidSystem<dim> &system) const;
 
   private:
+    /// The reference normal of geom @p g of body @p b (its
+    /// ReferenceNormal), from the patch's area-weighted normal sum and the
+    /// symmetry planes it touches (1 per axis whose plane it touches).
+    Eigen::Vector3d
+    reference_direction(const unsigned int     b,
+                        const unsigned int     g,
+                        const Eigen::Vector3d &normal_sum,
+                        const Eigen::Vector3d &symmetry_planes) const;
+
     const ContactSurface<dim>               &contact;
     std::unique_ptr<dealii::FE_Q<dim>>       scalar_fe;
     std::unique_ptr<dealii::DoFHandler<dim>> scalar_dofs;

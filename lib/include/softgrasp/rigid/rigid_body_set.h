@@ -11,6 +11,33 @@
 namespace softgrasp
 {
   /**
+   * How the contact force on a geom is split into its normal part
+   * (n n^T) F and its lateral part (I - n n^T) F: by which direction n.
+   */
+  struct ReferenceNormal
+  {
+    enum class Kind
+    {
+      /// The area-weighted mean normal of the geom's contact patch, with
+      /// the components across symmetry planes that the patch touches
+      /// removed (the mean normal of the whole, mirrored patch).
+      patch_mean,
+      /// A fixed world direction (given, or MuJoCo's equilibrium contact
+      /// normal from a kinematics file).
+      world,
+      /// A direction fixed in the geom's frame, turning with the geom.
+      geom_frame
+    };
+    Kind            kind      = Kind::patch_mean;
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero(); ///< unit
+
+    /// Parse the entry 'Reference normal' (@p path names it in errors):
+    /// "" or "patch mean", "x, y, z" (world) or "geom: x, y, z".
+    static ReferenceNormal parse(const std::string &text,
+                                 const std::string &path);
+  };
+
+  /**
    * The rigid contactors of a run (fingers, indenters, plates), read from
    * the subsection "Rigid bodies" of a .prm file or added in code.
    *
@@ -41,16 +68,15 @@ namespace softgrasp
     /**
      * Fix the reference normal (world frame, unit) used to split the force
      * on geom @p g of body @p b into normal and lateral parts (e.g.
-     * MuJoCo's equilibrium contact normal). Without it the mean normal of
-     * the geom's contact patch is used.
+     * MuJoCo's equilibrium contact normal): ReferenceNormal::Kind::world.
      */
     void set_reference_normal(const unsigned int     b,
                               const unsigned int     g,
                               const Eigen::Vector3d &normal);
 
-    /// The reference normal of a geom, if one was given.
-    std::optional<Eigen::Vector3d> reference_normal(const unsigned int b,
-                                                    const unsigned int g) const;
+    /// How the force on geom @p g of body @p b is split.
+    const ReferenceNormal &reference_normal(const unsigned int b,
+                                            const unsigned int g) const;
 
     const std::vector<RigidBody> &bodies() const;
     bool                          empty() const;
@@ -59,8 +85,8 @@ namespace softgrasp
     std::string geom_label(const unsigned int b, const unsigned int g) const;
 
   private:
-    std::vector<RigidBody>                                   body_list;
-    std::vector<std::vector<std::optional<Eigen::Vector3d>>> normals;
+    std::vector<RigidBody>                    body_list;
+    std::vector<std::vector<ReferenceNormal>> normals;
   };
 
   /// Read a pose trajectory CSV (header t,x,y,z,qw,qx,qy,qz); errors name
