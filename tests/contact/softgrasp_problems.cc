@@ -98,7 +98,7 @@ namespace
                     "0.5: -0.005, 0, 0.0355, 1, 0, 0, 0; "
                     "1: -0.001, 0, 0.0355, 1, 0, 0, 0\n end\nend\n"
                     "subsection Time\n set Integrator = quasi-static\n"
-                    " set End time = 1\n set Time step = 0.0625\nend\n"
+                    " set End time = 1\n set Time step = 0.0625\n set Phases =\nend\n"
                     "subsection Output\n set Directory = out-tube\n"
                     " set VTU interval = 0\n set Verbose = false\nend\n"));
     solver->run();

@@ -409,11 +409,14 @@ namespace softgrasp
                 << std::lround((time.end_time - integrator->time()) / time_step)
                 << " steps." << std::endl;
 
-    const double interval = time.step_size;
     while (this->state.time < time.end_time * (1 - 1e-12))
     {
-      const double t_record =
-          std::min(time.end_time, (this->state.step + 1) * interval);
+      // the next recorded time: on the grid of the phase's interval
+      const TimePhase phase = time.phase_at(this->state.time);
+      const double    begin = time.phase_begin(this->state.time);
+      const double    k =
+          std::floor((this->state.time - begin) / phase.step + 0.5);
+      const double t_record = std::min(phase.end, begin + (k + 1) * phase.step);
       while (integrator->time() < t_record - 1e-9 * time_step)
       {
         const double remaining = t_record - integrator->time();

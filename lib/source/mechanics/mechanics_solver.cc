@@ -174,7 +174,7 @@ namespace softgrasp
     }
     claim_output_directory();
     state           = RunState();
-    state.step_size = solver_parameters.time.step_size;
+    state.step_size = solver_parameters.time.phase_at(0).step;
     set_history_columns(leading, trailing);
   }
 
@@ -263,11 +263,17 @@ namespace softgrasp
     const auto &limits = solver_parameters.limits;
     if (!limits.check_size)
       return;
-    const auto  &time  = solver_parameters.time;
-    const double steps = time.end_time / time.step_size;
+    const auto &time  = solver_parameters.time;
+    double      steps = 0, begin = 0;
+    for (const auto &phase : time.phase_list())
+    {
+      steps += (phase.end - begin) / phase.step;
+      begin = phase.end;
+    }
     if (steps > limits.maximum_steps)
       throw InputError(
-          "'Time/End time' / 'Time/Time step' = " +
+          "'Time/End time' / 'Time/Time step' (summed over 'Time/Phases') "
+          "= " +
           std::to_string(std::llround(steps)) +
           " steps (or recorded states) exceed 'Run limits/Maximum steps' = " +
           std::to_string(limits.maximum_steps) +

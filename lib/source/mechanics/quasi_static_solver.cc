@@ -43,8 +43,7 @@ namespace softgrasp
 
   template <int dim>
   void QuasiStaticSolver<dim>::update_velocity(
-      const TrilinosWrappers::MPI::Vector &u_n,
-      const double                         dt)
+      const TrilinosWrappers::MPI::Vector &u_n, const double dt)
   {
     if (!dynamic())
       return;
@@ -108,7 +107,7 @@ namespace softgrasp
       if (resume)
         velocity = this->restored_fields[0];
     }
-    previous_time     = state.time;
+    previous_time = state.time;
     if (mortar)
     {
       solid->update_ghosts();
@@ -155,21 +154,24 @@ namespace softgrasp
     const auto previous_step = [&]() { return state.time; };
     while (previous_step() < time.end_time * (1 - 1e-12))
     {
+      // a step stays within its phase ('Time/Phases'), at most its step
+      const TimePhase               phase       = time.phase_at(state.time);
       unsigned int                  cut_backs   = 0;
       TrilinosWrappers::MPI::Vector u_converged = solid->solution();
       double                        t_new;
+      dt = std::min(dt, phase.step);
       for (;;)
       {
-        t_new = std::min(state.time + dt, time.end_time);
-        if (time.end_time - t_new < 1e-9 * dt)
-          t_new = time.end_time;
+        t_new = std::min(state.time + dt, phase.end);
+        if (phase.end - t_new < 1e-9 * dt)
+          t_new = phase.end;
         set_inertia(u_converged, t_new - state.time);
         if (solve_step(t_new, report))
           break;
         solid->solution() = u_converged;
         solid->update_ghosts();
         ++cut_backs;
-        if (cut_backs > time.max_cut_backs || dt / 2 < time.minimum_step)
+        if (cut_backs > time.max_cut_backs || dt / 2 < phase.minimum)
         {
           this->boundary_conditions.set_time(state.time);
           this->write_fields(state.time);
@@ -217,8 +219,11 @@ namespace softgrasp
             << ProgressReporter::format_duration(progress.elapsed()) << "  ETA "
             << ProgressReporter::format_duration(progress.eta(state.time))
             << std::endl;
-      if (cut_backs == 0)
-        dt = std::min(2 * dt, time.step_size);
+      const TimePhase next = time.phase_at(state.time);
+      if (next.end != phase.end)
+        dt = next.step; // a new phase starts with its own step
+      else if (cut_backs == 0)
+        dt = std::min(2 * dt, phase.step);
       state.step_size = dt;
       if (this->stopped)
       {
@@ -259,12 +264,12 @@ namespace softgrasp
                                            const unsigned int linear_iterations,
                                            const unsigned int cut_backs)
   {
-    std::vector<double> leading = {
-        this->state.step == 0 ? 0.0 : time - previous_time,
-        double(newton_iterations),
-        double(linear_iterations),
-        double(cut_backs),
-        this->progress.elapsed()};
+    std::vector<double> leading = {this->state.step == 0 ? 0.0
+                                                         : time - previous_time,
+                                   double(newton_iterations),
+                                   double(linear_iterations),
+                                   double(cut_backs),
+                                   this->progress.elapsed()};
     if (dynamic())
       leading.push_back(kinetic_energy());
     previous_time = time;

@@ -118,8 +118,99 @@ namespace softgrasp
                       "8",
                       Patterns::Integer(0, 60),
                       "How often one step may be halved. Unit: 1.");
+    prm.declare_entry(
+        "Phases",
+        "",
+        Patterns::Anything(),
+        "Stepping per phase of the loading, 'end: step[, minimum]; ...' "
+        "(s), phases in time order, the last ending at 'End time'; e.g. "
+        "'0.5: 0.05; 1.5: 0.0125, 1e-7' steps by 0.05 s up to 0.5 s (an "
+        "indentation) and by 0.0125 s, cut back to at least 1e-7 s, up to "
+        "1.5 s (a pull). A step never crosses a phase's end. 'step' is the "
+        "nominal load step (quasi-static and implicit dynamic) or the "
+        "recording interval (explicit); 'minimum' defaults to 'Minimum "
+        "time step'. Empty: one phase with 'Time step'. Unit: s.");
     prm.leave_subsection();
   }
+
+  std::vector<TimePhase> TimeParameters::phase_list() const
+  {
+    if (phases.empty())
+      return {{end_time, step_size, minimum_step}};
+    if (std::abs(phases.back().end - end_time) > 1e-9 * end_time)
+      throw InputError("'Time/Phases' ends at " +
+                       std::to_string(phases.back().end) +
+                       " s, but the run ends at " + std::to_string(end_time) +
+                       " s ('Time/End time', or the end a study sets). Fix: "
+                       "let the last phase end at the end time.");
+    return phases;
+  }
+
+  TimePhase TimeParameters::phase_at(const double time) const
+  {
+    const auto list = phase_list();
+    for (const auto &phase : list)
+      if (time < phase.end - 1e-12 * end_time)
+        return phase;
+    return list.back();
+  }
+
+  double TimeParameters::phase_begin(const double time) const
+  {
+    double begin = 0;
+    for (const auto &phase : phase_list())
+    {
+      if (time < phase.end - 1e-12 * end_time)
+        return begin;
+      begin = phase.end;
+    }
+    return begin;
+  }
+
+  namespace
+  {
+    /// Parse 'Time/Phases' (see its documentation).
+    std::vector<TimePhase> parse_phases(const std::string &text,
+                                        const double       default_minimum)
+    {
+      std::vector<TimePhase> phases;
+      const std::string      entry = "Parameter 'Time/Phases'";
+      for (const auto &item : Utilities::split_string_list(text, ';'))
+      {
+        const auto          colon = item.find(':');
+        std::vector<double> step;
+        TimePhase           phase;
+        try
+        {
+          if (colon == std::string::npos)
+            throw std::invalid_argument("no ':'");
+          phase.end = Utilities::string_to_double(item.substr(0, colon));
+          step      = Utilities::string_to_double(
+              Utilities::split_string_list(item.substr(colon + 1)));
+        }
+        catch (...)
+        {
+          step.clear();
+        }
+        if (step.empty() || step.size() > 2)
+          throw InputError(entry + ": '" + item +
+                           "' is not 'end: step' or 'end: step, minimum'. "
+                           "Fix: write e.g. '0.5: 0.05; 1.5: 0.0125, 1e-7' "
+                           "(s).");
+        phase.step         = step[0];
+        phase.minimum      = step.size() == 2 ? step[1] : default_minimum;
+        const double begin = phases.empty() ? 0.0 : phases.back().end;
+        if (!(phase.end > begin) || !(phase.step > 0) || !(phase.minimum > 0) ||
+            phase.minimum > phase.step)
+          throw InputError(entry + ": in '" + item +
+                           "' the end must follow the previous phase's end "
+                           "(or 0) and 0 < minimum <= step. Fix: list the "
+                           "phases in time order with positive steps (s).");
+        phases.push_back(phase);
+      }
+      return phases;
+    }
+  } // namespace
 
   void TimeParameters::parse_parameters(ParameterHandler &prm)
   {
@@ -130,6 +221,7 @@ namespace softgrasp
     step_size     = section.get_positive("Time step", "s");
     minimum_step  = section.get_positive("Minimum time step", "s");
     max_cut_backs = prm.get_integer("Maximum cut-backs");
+    phases        = parse_phases(prm.get("Phases"), minimum_step);
     if (minimum_step > step_size)
       throw InputError("Parameter 'Time/Minimum time step' (" +
                        std::to_string(minimum_step) +
@@ -137,6 +229,7 @@ namespace softgrasp
                        std::to_string(step_size) +
                        " s). Fix: make it smaller than the time step.");
     prm.leave_subsection();
+    phase_list(); // the phases end at the end time
   }
 
   void NewtonParameters::declare_parameters(ParameterHandler &prm)

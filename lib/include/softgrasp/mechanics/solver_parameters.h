@@ -51,6 +51,15 @@ namespace softgrasp
     void        parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /// One phase of the loading with its own stepping (e.g. an indentation,
+  /// then a pull): from the previous phase's end (or 0) to @p end.
+  struct TimePhase
+  {
+    double end     = 1.0;  ///< s
+    double step    = 0.1;  ///< nominal step or record interval, s
+    double minimum = 1e-6; ///< smallest step after cut-backs, s
+  };
+
   /// Load/time stepping ("Time" subsection).
   struct TimeParameters
   {
@@ -60,6 +69,16 @@ namespace softgrasp
     double       step_size     = 0.1;
     double       minimum_step  = 1e-6; ///< smallest step after cut-backs, s
     unsigned int max_cut_backs = 8; ///< halvings of one step before giving up
+    /// 'Time/Phases'; empty: one phase (end_time, step_size, minimum_step)
+    std::vector<TimePhase> phases;
+
+    /// The phases of the run (the one-phase default if none are given);
+    /// throws an InputError if given phases do not end at end_time.
+    std::vector<TimePhase> phase_list() const;
+    /// The phase that the step starting at @p time belongs to.
+    TimePhase phase_at(const double time) const;
+    /// The start of the phase that the step starting at @p time belongs to.
+    double phase_begin(const double time) const;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

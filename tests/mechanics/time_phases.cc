@@ -1,0 +1,110 @@
+// Per-phase stepping ('Time/Phases'): a block stretched by 20 % with a
+// coarse first phase (0.25 s steps to 0.5 s) and a fine second one (0.1 s
+// steps to 1 s) records exactly the phase grid with both the quasi-static
+// and the explicit solver, the quasi-static stretch ends at the exact
+// uniaxial force of the material, and bad phase lists are refused with a
+// message naming the entry and the fix.
+#include "../solver_factory.h"
+#include "../tests.h"
+
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/materials/homogeneous_loading.h>
+
+using namespace softgrasp_tests;
+
+namespace
+{
+  const double L = 0.01; // block edge (m)
+
+  std::string stretch_prm(const std::string &integrator,
+                          const std::string &phases,
+                          const std::string &directory)
+  {
+    std::ostringstream prm;
+    prm << "subsection Mesh\n set Type = block\n"
+        << " subsection Block\n  set Upper corner = " << L << ", " << L << ", "
+        << L << "\n  set Subdivisions = 2, 2, 2\n end\nend\n"
+        << "subsection Finite element\n set Formulation = mixed u-p-J\nend\n"
+        << "subsection Materials\n set Material ids = 0\n"
+        << " subsection Material 0\n  set Model = neo-Hookean\n"
+        << "  set Density = 1000\n"
+        << "  subsection neo-Hookean\n   set Shear modulus = 1e4\n  end\n"
+        << "  subsection Volumetric\n   set Poisson's ratio = 0.45\n  end\n"
+        << " end\nend\n"
+        << "subsection Boundary conditions\n"
+        << " set Dirichlet boundary ids = 0, 1, 2, 4\n"
+        << " subsection Dirichlet boundary 0\n  set Components = x\n end\n"
+        << " subsection Dirichlet boundary 1\n  set Components = x\n"
+        << "  set Displacement = " << 0.2 * L
+        << " * (1 - cos(pi * t)) / 2; 0; 0\n end\n"
+        << " subsection Dirichlet boundary 2\n  set Components = y\n end\n"
+        << " subsection Dirichlet boundary 4\n  set Components = z\n end\n"
+        << "end\n"
+        << "subsection Time\n set Integrator = " << integrator
+        << "\n set End time = 1\n set Phases = " << phases << "\nend\n"
+        << "subsection Explicit dynamics\n set Mass damping = 200\nend\n"
+        << "subsection Newton\n set Relative tolerance = 1e-12\nend\n"
+        << "subsection Linear solver\n set Type = direct\nend\n"
+        << "subsection Output\n set Directory = " << directory
+        << "\n set VTU interval = 0\n set Verbose = false\nend\n";
+    return prm.str();
+  }
+
+  /// Run and check the recorded times against @p expected; return the
+  /// last x reaction on the loaded face (N).
+  double run(const std::string &integrator, const std::vector<double> &expected)
+  {
+    auto solver = make_solver<3>(
+        stretch_prm(integrator, "0.5: 0.25; 1: 0.1", "out-" + integrator));
+    solver->run();
+    const auto &history = solver->history();
+    dealii::deallog << integrator << ": recorded times";
+    SG_CHECK(history.rows.size() == expected.size(), "one row per step");
+    for (unsigned int i = 0; i < history.rows.size(); ++i)
+    {
+      const double t = history.value(i, "time");
+      dealii::deallog << ' ' << t;
+      SG_CHECK(close(t, expected[i], 0, 1e-12), "the phase grid");
+    }
+    dealii::deallog << std::endl;
+    return history.value(history.rows.size() - 1, "reaction_1_x");
+  }
+
+  void refused(const std::string &phases)
+  {
+    try
+    {
+      make_solver<3>(stretch_prm("quasi-static", phases, "out-bad"));
+    }
+    catch (const softgrasp::InputError &e)
+    {
+      dealii::deallog << "'" << phases << "' refused: " << e.what()
+                      << std::endl;
+      return;
+    }
+    SG_CHECK(false, "a bad phase list is refused");
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog(8);
+  const std::vector<double> grid  = {0, 0.25, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+  const double              force = run("quasi-static", grid);
+  run("explicit dynamic", grid);
+
+  auto probe = make_solver<3>(stretch_prm("quasi-static", "", "out-probe"));
+  const auto exact = softgrasp::HomogeneousLoading::uniaxial(
+      probe->materials().get(0), {}, 1.2);
+  const double expected = exact.nominal_stress * L * L;
+  dealii::deallog << "quasi-static force " << force << " N, exact " << expected
+                  << " N" << std::endl;
+  SG_CHECK(close(force, expected, 1e-8), "the exact uniaxial force");
+
+  refused("0.5: 0.25; 0.9: 0.1");
+  refused("0.5: 0.25; 0.4: 0.1");
+  refused("0.5 0.25; 1: 0.1");
+  refused("0.5: 0.25; 1: 0.1, 0.2");
+}
