@@ -143,6 +143,35 @@ namespace softgrasp
   }
 
   template <int dim>
+  typename ContactSurface<dim>::Penetration
+  ContactSurface<dim>::deepest_penetration(
+      const TrilinosWrappers::MPI::Vector &u) const
+  {
+    Penetration here;
+    if (!poses_now.empty())
+      for (const auto &node : node_list)
+      {
+        Eigen::Vector3d x = node.reference_position;
+        for (unsigned int c = 0; c < dim; ++c)
+          x[c] += u(node.dofs[c]);
+        const Proximity p = nearest(x);
+        if (p.body >= 0 && -p.gap > here.depth)
+          here = {-p.gap, x};
+      }
+    const auto all =
+        Utilities::MPI::all_gather(comm,
+                                   std::array<double, 4>{{here.depth,
+                                                          here.position[0],
+                                                          here.position[1],
+                                                          here.position[2]}});
+    Penetration deepest;
+    for (const auto &a : all)
+      if (a[0] > deepest.depth)
+        deepest = {a[0], Eigen::Vector3d(a[1], a[2], a[3])};
+    return deepest;
+  }
+
+  template <int dim>
   std::pair<unsigned int, double> ContactSurface<dim>::overlap_summary(
       const std::vector<double> &overlaps) const
   {

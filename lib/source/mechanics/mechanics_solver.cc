@@ -228,6 +228,13 @@ namespace softgrasp
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back("u" + std::to_string(p) + "_" + axes[d]);
     columns.insert(columns.end(), trailing.begin(), trailing.end());
+    if (surface_output)
+    {
+      // the deepest penetration of the tissue into a geom, and where
+      columns.push_back("penetration");
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back(std::string("penetration_") + axes[d]);
+    }
     history_writer.set_columns(columns);
     history_writer.rows.clear();
     if (surface_output)
@@ -378,6 +385,14 @@ namespace softgrasp
       for (unsigned int d = 0; d < dim; ++d)
         row.push_back(u[d]);
     row.insert(row.end(), trailing.begin(), trailing.end());
+    if (surface_output)
+    {
+      const auto deepest =
+          contact_surface->deepest_penetration(solid->ghosted_solution());
+      row.push_back(deepest.depth);
+      for (unsigned int d = 0; d < dim; ++d)
+        row.push_back(deepest.position[d]);
+    }
     history_writer.add_row(row);
     if (surface_output)
     {

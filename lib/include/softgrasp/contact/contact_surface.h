@@ -75,6 +75,21 @@ namespace softgrasp
     template <typename VectorType>
     std::vector<double> node_overlaps(const double time, const VectorType &u);
 
+    /// The deepest penetration of a slave node into a rigid geom.
+    struct Penetration
+    {
+      double          depth    = 0;                       ///< m, >= 0 (0: none)
+      Eigen::Vector3d position = Eigen::Vector3d::Zero(); ///< of the node, m
+    };
+
+    /**
+     * The deepest penetration over all slave nodes displaced by @p u
+     * (ghosted), with the geoms where the last set_time() or update put
+     * them: what the history reports per step. Collective.
+     */
+    Penetration
+    deepest_penetration(const dealii::TrilinosWrappers::MPI::Vector &u) const;
+
     /// The global number of nodes with an overlap and the deepest (m).
     std::pair<unsigned int, double>
     overlap_summary(const std::vector<double> &overlaps) const;
