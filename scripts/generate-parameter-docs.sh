@@ -14,6 +14,10 @@ echo "wrote doc/parameters/solver.prm (every solver program: quasi-static and ex
   "$root/examples/hertz_indentation/hertz_indentation.prm" \
   > "$root/doc/parameters/contact_hertz_indentation.prm"
 echo "wrote doc/parameters/contact_hertz_indentation.prm (all entries of a run with rigid bodies and contact)"
+"$root/build/programs/softgrasp/softgrasp" --print-parameters \
+  "$root/programs/softgrasp/tube_drag.prm" \
+  > "$root/doc/parameters/softgrasp_tube_drag.prm"
+echo "wrote doc/parameters/softgrasp_tube_drag.prm (the softgrasp program on a tube mesh with phases)"
 if [ -x "$root/build/studies/sphere_squeeze/sphere_squeeze" ]; then
   (cd "$root/build/studies/sphere_squeeze" &&
     ./sphere_squeeze --print-parameters sphere_squeeze.prm) \

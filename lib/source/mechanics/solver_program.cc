@@ -13,10 +13,12 @@ namespace softgrasp
 
   namespace
   {
-    void declare_dimension(ParameterHandler &prm)
+    /// 'Dimension' with the default @p dim (the dimension a program that
+    /// reads it runs in).
+    void declare_dimension(ParameterHandler &prm, const unsigned int dim = 2)
     {
       prm.declare_entry("Dimension",
-                        "2",
+                        std::to_string(dim),
                         Patterns::Integer(2, 3),
                         "Space dimension: 2 (plane strain; forces per metre "
                         "of thickness) or 3. Unit: 1.");
@@ -45,11 +47,16 @@ namespace softgrasp
   void SolverProgram::read_parameters(ParameterHandler  &prm,
                                       const std::string &filename)
   {
-    declare_dimension(prm);
+    declare_dimension(prm, dim);
     MechanicsSolver<dim>::declare_parameters(prm);
     ParameterReader reader;
     MechanicsSolver<dim>::add_passes(reader);
     reader.read_file(prm, filename);
+    if (prm.get_integer("Dimension") != dim)
+      throw InputError("'Dimension' = " + prm.get("Dimension") + " in '" +
+                       filename + "', but this program runs in " +
+                       std::to_string(dim) + "D only. Fix: set 'Dimension = " +
+                       std::to_string(dim) + "' or remove the entry.");
   }
 
   int SolverProgram::run(int argc, char **argv) const
