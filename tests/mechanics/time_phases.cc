@@ -2,13 +2,15 @@
 // coarse first phase (0.25 s steps to 0.5 s) and a fine second one (0.1 s
 // steps to 1 s) records exactly the phase grid with both the quasi-static
 // and the explicit solver, the quasi-static stretch ends at the exact
-// uniaxial force of the material, and bad phase lists are refused with a
+// uniaxial force of the material (and every cell's quadrature-point
+// strains the exact stretches), and bad phase lists are refused with a
 // message naming the entry and the fix.
 #include "../solver_factory.h"
 #include "../tests.h"
 
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/materials/homogeneous_loading.h>
+#include <softgrasp/postprocess/strain_postprocessor.h>
 
 using namespace softgrasp_tests;
 
@@ -51,7 +53,9 @@ namespace
   }
 
   /// Run and check the recorded times against @p expected; return the
-  /// last x reaction on the loaded face (N).
+  /// last x reaction on the loaded face (N) and, for the quasi-static run,
+  /// check the quadrature-point strains of every cell against the exact
+  /// homogeneous stretches.
   double run(const std::string &integrator, const std::vector<double> &expected)
   {
     auto solver = make_solver<3>(
@@ -67,6 +71,27 @@ namespace
       SG_CHECK(close(t, expected[i], 0, 1e-12), "the phase grid");
     }
     dealii::deallog << std::endl;
+    if (integrator == "quasi-static")
+    {
+      const auto exact = softgrasp::HomogeneousLoading::uniaxial(
+          solver->materials().get(0), {}, 1.2);
+      const auto &tria = solver->system().dof_handler().get_triangulation();
+      dealii::Vector<float> e_max(tria.n_active_cells()),
+          e_min(tria.n_active_cells());
+      softgrasp::cell_strain_extremes(solver->system(), e_max, e_min);
+      for (const auto &cell : tria.active_cell_iterators())
+      {
+        SG_CHECK(close(e_max[cell->active_cell_index()], 0.2, 1e-6),
+                 "e_max at the quadrature points: the stretch 1.2");
+        SG_CHECK(close(e_min[cell->active_cell_index()],
+                       exact.stretches[1] - 1,
+                       1e-6),
+                 "e_min at the quadrature points: the lateral stretch");
+      }
+      dealii::deallog << "cell extremes of e at the quadrature points: "
+                      << e_max[0] << ", " << e_min[0] << " (exact 0.2, "
+                      << exact.stretches[1] - 1 << ")" << std::endl;
+    }
     return history.value(history.rows.size() - 1, "reaction_1_x");
   }
 

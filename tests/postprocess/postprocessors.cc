@@ -126,12 +126,22 @@ main(int argc, char **argv)
       has_skin_cell = true;
       break;
     }
-  std::vector<Vector<double>> strain_out(1, Vector<double>(7)),
+  std::vector<Vector<double>> strain_out(1, Vector<double>(11)),
       stress_out(1, Vector<double>(11));
   strain.evaluate_vector_field(inputs, strain_out);
   SG_CHECK_CLOSE(strain_out[0][0], expected.e_max(), 1e-12, 0, "e_max output");
   SG_CHECK_CLOSE(strain_out[0][2], expected.e_min(), 1e-12, 0, "e_min output");
   SG_CHECK_CLOSE(strain_out[0][3], expected.J, 1e-12, 0, "J output");
+  // Green-Lagrange and logarithmic principal strains of the same stretches
+  const double l_max = 1 + expected.e_max(), l_min = 1 + expected.e_min();
+  SG_CHECK_CLOSE(
+      strain_out[0][7], (l_max * l_max - 1) / 2, 1e-12, 0, "E_GL_max output");
+  SG_CHECK_CLOSE(
+      strain_out[0][8], (l_min * l_min - 1) / 2, 1e-12, 0, "E_GL_min output");
+  SG_CHECK_CLOSE(
+      strain_out[0][9], std::log(l_max), 1e-12, 0, "log_strain_max output");
+  SG_CHECK_CLOSE(
+      strain_out[0][10], std::log(l_min), 1e-12, 0, "log_strain_min output");
   if (has_skin_cell)
   {
     stress.evaluate_vector_field(inputs, stress_out);

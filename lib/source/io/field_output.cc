@@ -43,6 +43,7 @@ namespace softgrasp
         }
       }
     };
+
   } // namespace
 
   template <int dim>
@@ -86,6 +87,11 @@ namespace softgrasp
         rank[cell->active_cell_index()] =
             Utilities::MPI::this_mpi_process(comm);
       }
+    Vector<float> e_max_cell(tria.n_active_cells());
+    Vector<float> e_min_cell(tria.n_active_cells());
+    cell_strain_extremes(system, e_max_cell, e_min_cell);
+    data_out.add_data_vector(e_max_cell, "e_max_cell");
+    data_out.add_data_vector(e_min_cell, "e_min_cell");
     data_out.add_data_vector(material_id, "material_id");
     data_out.add_data_vector(rank, "mpi_rank");
     if (extra)

@@ -1,4 +1,8 @@
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
 #include <softgrasp/base/plane_strain.h>
+#include <softgrasp/mechanics/solid_system.h>
 #include <softgrasp/postprocess/principal_strains.h>
 #include <softgrasp/postprocess/strain_postprocessor.h>
 
@@ -32,6 +36,13 @@ namespace softgrasp
       out[3]              = p.J;
       for (unsigned int i = 0; i < dim; ++i)
         out[4 + i] = p.directions[0][i];
+      // the same principal stretches as Green-Lagrange and logarithmic
+      // strains
+      const double l_max = p.stretches[0], l_min = p.stretches[2];
+      out[4 + dim]     = (l_max * l_max - 1) / 2;
+      out[4 + dim + 1] = (l_min * l_min - 1) / 2;
+      out[4 + dim + 2] = std::log(l_max);
+      out[4 + dim + 3] = std::log(l_min);
     }
   }
 
@@ -41,6 +52,9 @@ namespace softgrasp
     std::vector<std::string> names = {"e_max", "e_mid", "e_min", "J"};
     for (unsigned int i = 0; i < dim; ++i)
       names.emplace_back("n_max");
+    for (const char *name :
+         {"E_GL_max", "E_GL_min", "log_strain_max", "log_strain_min"})
+      names.emplace_back(name);
     return names;
   }
 
@@ -53,6 +67,9 @@ namespace softgrasp
     for (unsigned int i = 0; i < dim; ++i)
       interpretation.push_back(
           DataComponentInterpretation::component_is_part_of_vector);
+    for (unsigned int i = 0; i < 4; ++i)
+      interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
     return interpretation;
   }
 
@@ -61,6 +78,44 @@ namespace softgrasp
   {
     return update_gradients;
   }
+
+  template <int dim>
+  void cell_strain_extremes(const SolidSystem<dim> &system,
+                            Vector<float>          &e_max,
+                            Vector<float>          &e_min)
+  {
+    const QGauss<dim> quadrature(system.fe().degree + 1);
+    FEValues<dim>     values(
+        system.mapping(), system.fe(), quadrature, update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<2, dim>>      gradients(quadrature.size());
+    for (const auto &cell : system.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        values.reinit(cell);
+        values[displacement].get_function_gradients(system.ghosted_solution(),
+                                                    gradients);
+        double largest = -1e300, smallest = 1e300;
+        for (const auto &grad_u : gradients)
+        {
+          Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+          F += grad_u;
+          const PrincipalStrains p =
+              PrincipalStrains::compute(PlaneStrain::to_3d(F));
+          largest  = std::max(largest, p.e_max());
+          smallest = std::min(smallest, p.e_min());
+        }
+        e_max[cell->active_cell_index()] = largest;
+        e_min[cell->active_cell_index()] = smallest;
+      }
+  }
+
+  template void cell_strain_extremes(const SolidSystem<2> &,
+                                     Vector<float> &,
+                                     Vector<float> &);
+  template void cell_strain_extremes(const SolidSystem<3> &,
+                                     Vector<float> &,
+                                     Vector<float> &);
 
   template class StrainPostprocessor<2>;
   template class StrainPostprocessor<3>;
