@@ -8,7 +8,8 @@
 //
 // Reports per case: DoFs, cells, time per evaluation and DoF-evaluations
 // per second (in total over all ranks) of each kernel, time per element,
-// and the peak resident memory. Results in doc/benchmarks.md.
+// and the peak resident memory; for Q2 also the u-p-J elements Q2-P0
+// (vectorised) and Q2-P1 (reference kernel). Results in doc/benchmarks.md.
 //
 // Run: ./internal_force_throughput [max DoFs, default 1.2e6]
 //      mpirun -np 2 ./internal_force_throughput
@@ -80,11 +81,20 @@ namespace
     const MappingQ<3>         mapping(1);
     AffineConstraints<double> none;
     none.close();
-    using Kernel = InternalForceOperator<3>::Kernel;
-    const InternalForceOperator<3> op(
-        mapping, dofs, none, materials, false, Kernel::vectorized);
-    const InternalForceOperator<3> op_reference(
-        mapping, dofs, none, materials, false, Kernel::reference);
+    using Kernel     = InternalForceOperator<3>::Kernel;
+    using Dilatation = InternalForceOperator<3>::Dilatation;
+    const InternalForceOperator<3>             op(mapping,
+                                      dofs,
+                                      none,
+                                      materials,
+                                      Dilatation::pointwise,
+                                      Kernel::vectorized);
+    const InternalForceOperator<3>             op_reference(mapping,
+                                                dofs,
+                                                none,
+                                                materials,
+                                                Dilatation::pointwise,
+                                                Kernel::reference);
     LinearAlgebra::distributed::Vector<double> u, f;
     op.initialize_dof_vector(u);
     op.initialize_dof_vector(f);
@@ -169,6 +179,28 @@ namespace
                 << mf0 / mf << ", over FEValues " << std::setw(5) << fev / mf
                 << " | peak memory " << std::setw(6) << memory << " MB"
                 << std::endl;
+    if (degree == 2)
+    {
+      // The u-p-J elements of the explicit solver: Q2-P0 (mean dilatation,
+      // vectorised) and Q2-P1 (linear projections, reference kernel).
+      const InternalForceOperator<3> p0(mapping,
+                                        dofs,
+                                        none,
+                                        materials,
+                                        Dilatation::element_constant,
+                                        Kernel::vectorized);
+      const InternalForceOperator<3> p1(mapping,
+                                        dofs,
+                                        none,
+                                        materials,
+                                        Dilatation::element_linear,
+                                        Kernel::vectorized);
+      const double t0 = seconds_per_apply(p0), t1 = seconds_per_apply(p1);
+      if (root)
+        std::cout << "   u-p-J: Q2-P0 vectorised " << std::setw(9) << t0 * 1e3
+                  << " ms | Q2-P1 (reference kernel) " << std::setw(9)
+                  << t1 * 1e3 << " ms | P1/P0 " << t1 / t0 << std::endl;
+    }
   }
 } // namespace
 

@@ -2,6 +2,7 @@
 #ifndef softgrasp_tests_contact_factory_h
 #define softgrasp_tests_contact_factory_h
 
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -141,6 +142,22 @@ namespace softgrasp_tests
       << "subsection Linear solver\n set Type = " << linear_solver << "\nend\n"
       << "subsection Output\n set Directory = " << directory
       << "\n set VTU interval = 0\n set Verbose = false\nend\n";
+    return s.str();
+  }
+
+  /// The indenter trajectory of hertz_prm() pressed @p depth (m) along a
+  /// cosine ramp d(t) = depth (1 - cos(pi t / T)) / 2 over [0, T] (zero
+  /// speed at both ends), sampled at 41 points.
+  inline std::string cosine_ramp_trajectory(const double depth, const double T)
+  {
+    std::ostringstream s;
+    s.precision(12);
+    for (unsigned int k = 0; k <= 40; ++k)
+    {
+      const double t = T * k / 40;
+      const double d = depth * (1 - std::cos(M_PI * t / T)) / 2;
+      s << (k ? "; " : "") << t << ": 0, 0, " << 0.01 - d << ", 1, 0, 0, 0";
+    }
     return s.str();
   }
 

@@ -9,6 +9,7 @@
 // stays constant.
 #include "../solver_factory.h"
 #include "../tests.h"
+#include "problem_file.h"
 
 #include <cmath>
 #include <sstream>
@@ -17,19 +18,6 @@ using namespace softgrasp_tests;
 
 namespace
 {
-  /// The text of a shipped problem file without its 'Dimension' line (the
-  /// program's entry), followed by @p overrides (a later 'set' wins).
-  std::string problem(const std::string &name, const std::string &overrides)
-  {
-    std::istringstream in(
-        softgrasp::ParameterReader::file_text(PROBLEM_DIR "/" + name));
-    std::string text, line;
-    while (std::getline(in, line))
-      if (line.rfind("set Dimension", 0) != 0)
-        text += line + "\n";
-    return text + overrides;
-  }
-
   void sphere_into_block()
   {
     auto solver =

@@ -17,7 +17,6 @@ using namespace softgrasp_tests;
 
 namespace
 {
-  /// The sphere's trajectory: the cosine ramp sampled at 41 points.
   std::string trajectory(const double depth, const double T)
   {
     std::ostringstream s;
@@ -37,7 +36,8 @@ namespace
     std::ostringstream s;
     s << hertz_prm(8, 1.5, 0.01, 1, 10, "output-punch-" + integrator)
       << "subsection Rigid bodies\n subsection Body indenter\n"
-      << "  set Trajectory = " << trajectory(depth, T) << "\n end\nend\n"
+      << "  set Trajectory = " << cosine_ramp_trajectory(depth, T)
+      << "\n end\nend\n"
       << "subsection Time\n set Integrator = "
       << (integrator == "implicit" ? "quasi-static" : "explicit dynamic")
       << "\n set End time = " << T << "\n set Time step = " << T / 10

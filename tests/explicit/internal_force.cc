@@ -204,17 +204,24 @@ namespace
     VectorTools::interpolate(mapping, dofs, Homogeneous<dim>(H), u);
     const auto homogeneous = op.apply(u, f);
 
-    // Mean dilatation (u-p-J with one pressure per element) is exact for
-    // a homogeneous deformation: J_e = J, the same forces and energy.
-    InternalForceOperator<dim> mean(mapping, dofs, none, library, true);
-    LinearAlgebra::distributed::Vector<double> f_mean;
-    mean.initialize_dof_vector(f_mean);
-    const auto mean_result = mean.apply(u, f_mean);
-    f_mean -= f;
-    SG_CHECK(f_mean.linfty_norm() < 1e-12 * f.linfty_norm() &&
-                 std::abs(mean_result.energy - homogeneous.energy) <
-                     1e-12 * homogeneous.energy,
-             "mean dilatation equals the standard form when J is uniform");
+    // The u-p-J forms (one pressure per element, mean dilatation, and the
+    // linear P1 projection) are exact for a homogeneous deformation:
+    // J~ = J, the same forces and energy.
+    for (const auto form :
+         {InternalForceOperator<dim>::Dilatation::element_constant,
+          InternalForceOperator<dim>::Dilatation::element_linear})
+    {
+      const InternalForceOperator<dim> mixed(
+          mapping, dofs, none, library, form);
+      LinearAlgebra::distributed::Vector<double> f_mixed;
+      mixed.initialize_dof_vector(f_mixed);
+      const auto mixed_result = mixed.apply(u, f_mixed);
+      f_mixed -= f;
+      SG_CHECK(f_mixed.linfty_norm() < 1e-12 * f.linfty_norm() &&
+                   std::abs(mixed_result.energy - homogeneous.energy) <
+                       1e-12 * homogeneous.energy,
+               "u-p-J equals the standard form when J is uniform");
+    }
 
     Tensor<2, dim> F_dim = H;
     for (unsigned int d = 0; d < dim; ++d)
@@ -281,6 +288,79 @@ namespace
     SG_CHECK(interior < 1e-10 * scale, "homogeneous state in equilibrium");
     SG_CHECK(traction_error < 1e-10, "face force equals the traction");
   }
+
+  /**
+   * The u-p-J forces are the gradient of the operator's energy
+   * E(u) = int Psi_iso dV + int U(J~) dV (what the explicit energy balance
+   * relies on): f(u) . w against (E(u + e w) - E(u - e w)) / 2e on a
+   * distorted Q2 mesh with two materials and a non-uniform J, for the
+   * constant and the linear projection; the two differ from each other and
+   * from the pointwise form.
+   */
+  template <int dim> void energy_gradient(const MaterialLibrary &materials)
+  {
+    using Operator = InternalForceOperator<dim>;
+    parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
+    GridGenerator::subdivided_hyper_cube(tria, 3, 0, 1);
+    GridTools::distort_random(0.2, tria, true, 3);
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(cell->center()[0] > 0.5 ? 1 : 0);
+    const FESystem<dim> fe(FE_Q<dim>(2), dim);
+    DoFHandler<dim>     dofs(tria);
+    dofs.distribute_dofs(fe);
+    const MappingQ<dim>       mapping(1);
+    AffineConstraints<double> none;
+    none.close();
+    std::map<typename Operator::Dilatation, Vector<double>> forces;
+    for (const auto form : {Operator::Dilatation::pointwise,
+                            Operator::Dilatation::element_constant,
+                            Operator::Dilatation::element_linear})
+    {
+      const Operator op(
+          mapping, dofs, none, materials, form, Operator::Kernel::reference);
+      LinearAlgebra::distributed::Vector<double> u, w, f, shifted;
+      for (auto *v : {&u, &w, &f, &shifted})
+        op.initialize_dof_vector(*v);
+      VectorTools::interpolate(mapping, dofs, Displacement<dim>(), u);
+      for (const auto i : u.locally_owned_elements())
+        w[i] = std::sin(0.37 * i + 0.1); // a direction touching every dof
+      op.apply(u, f);
+      const double eps = 1e-6, derivative = f * w;
+      shifted = u;
+      shifted.add(eps, w);
+      const double plus = op.apply(shifted, f).energy;
+      shifted.add(-2 * eps, w);
+      const double minus = op.apply(shifted, f).energy;
+      const double error = std::abs((plus - minus) / (2 * eps) - derivative) /
+                           std::abs(derivative);
+      const char *name = form == Operator::Dilatation::pointwise ? "pointwise"
+                         : form == Operator::Dilatation::element_constant
+                             ? "P0"
+                             : "P1";
+      dealii::deallog << dim << "D Q2 " << name
+                      << ": f . w equals dE/du . w within 1e-6: "
+                      << (error < 1e-6) << std::endl;
+      SG_CHECK(error < 1e-6, "forces are the energy's gradient");
+      op.apply(u, f);
+      forces[form] = Vector<double>(f.begin(), f.end());
+    }
+    const auto difference = [&](const auto a, const auto b)
+    {
+      Vector<double> d = forces[a];
+      d -= forces[b];
+      return Utilities::MPI::max(d.linfty_norm(), MPI_COMM_WORLD) /
+             Utilities::MPI::max(forces[b].linfty_norm(), MPI_COMM_WORLD);
+    };
+    const bool distinct =
+        difference(Operator::Dilatation::element_linear,
+                   Operator::Dilatation::element_constant) > 1e-3 &&
+        difference(Operator::Dilatation::element_linear,
+                   Operator::Dilatation::pointwise) > 1e-3;
+    dealii::deallog << dim
+                    << "D Q2: P1, P0 and pointwise forces differ: " << distinct
+                    << std::endl;
+    SG_CHECK(distinct, "the three volumetric forms are different elements");
+  }
 } // namespace
 
 int
@@ -296,4 +376,6 @@ main(int argc, char **argv)
     patch<2>(degree);
     patch<3>(degree);
   }
+  energy_gradient<2>(materials);
+  energy_gradient<3>(materials);
 }

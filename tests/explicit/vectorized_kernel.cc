@@ -42,6 +42,15 @@ namespace
     const bool inverting;
   };
 
+  /// The operator's volumetric form for a mean-dilatation flag.
+  template <int dim>
+  typename InternalForceOperator<dim>::Dilatation
+  dilatation(const bool mean_dilatation)
+  {
+    using D = typename InternalForceOperator<dim>::Dilatation;
+    return mean_dilatation ? D::element_constant : D::pointwise;
+  }
+
   template <int dim>
   void compare(const unsigned int     degree,
                const bool             mean_dilatation,
@@ -66,13 +75,13 @@ namespace
                               dofs,
                               none,
                               materials,
-                              mean_dilatation,
+                              dilatation<dim>(mean_dilatation),
                               Operator::Kernel::vectorized);
     const Operator                             reference(mapping,
                              dofs,
                              none,
                              materials,
-                             mean_dilatation,
+                             dilatation<dim>(mean_dilatation),
                              Operator::Kernel::reference);
     LinearAlgebra::distributed::Vector<double> u, f, f_reference;
     vectorized.initialize_dof_vector(u);

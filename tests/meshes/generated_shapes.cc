@@ -143,9 +143,7 @@ namespace
               "  set Fine zone length = 0.04\n  set Fine zone cells = 2\n"
               "  set Axial growth = 1.5\n");
       // the axis x turned to z about y, then moved
-      factory.placement.rotation =
-          Tensor<2, 3>({{0., 0., -1.}, {0., 1., 0.}, {1., 0., 0.}});
-      factory.placement.translation = Tensor<1, 3>({0.3, -0.2, 0.1});
+      factory.placement  = turned_and_moved();
       const double frac  = sector == "full" ? 1 : sector == "half" ? 0.5 : 0.25;
       const double strip = (ro - ri) * L;
       std::map<unsigned int, double> areas = {

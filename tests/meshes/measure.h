@@ -9,6 +9,7 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/tria.h>
 #include <map>
+#include <softgrasp/meshes/mesh_generator.h>
 
 namespace softgrasp_tests
 {
@@ -39,6 +40,16 @@ namespace softgrasp_tests
             area[cell->face(f)->boundary_id()] += face_values.JxW(q);
         }
     }
+  }
+
+  /// A placement that turns the x axis to z (about y) and moves the mesh.
+  inline softgrasp::Placement<3> turned_and_moved()
+  {
+    softgrasp::Placement<3> placement;
+    placement.rotation =
+        dealii::Tensor<2, 3>({{0., 0., -1.}, {0., 1., 0.}, {1., 0., 0.}});
+    placement.translation = dealii::Tensor<1, 3>({0.3, -0.2, 0.1});
+    return placement;
   }
 
   /// The largest |measured - exact| / exact over the ids of @p exact (1

@@ -50,18 +50,24 @@ namespace softgrasp
     hanging.reinit(this->solid->locally_relevant_dofs());
     DoFTools::make_hanging_node_constraints(dofs, hanging);
     hanging.close();
-    const bool mixed = this->solver_parameters.discretization.formulation ==
-                       Formulation::mixed_upJ;
-    using Kernel = typename InternalForceOperator<dim>::Kernel;
-    force        = std::make_unique<InternalForceOperator<dim>>(
+    const auto &element = this->solver_parameters.discretization;
+    using Operator      = InternalForceOperator<dim>;
+    using Kernel        = typename Operator::Kernel;
+    using Dilatation    = typename Operator::Dilatation;
+    const Dilatation dilatation =
+        element.formulation == Formulation::displacement
+            ? Dilatation::pointwise
+            : (element.pressure_degree() == 0 ? Dilatation::element_constant
+                                              : Dilatation::element_linear);
+    force = std::make_unique<Operator>(
         this->solid->mapping(),
         dofs,
         hanging,
         this->material_library,
-        mixed,
+        dilatation,
         this->solver_parameters.explicit_dynamics.vectorized_force_kernel
-                   ? Kernel::vectorized
-                   : Kernel::reference);
+            ? Kernel::vectorized
+            : Kernel::reference);
     force->initialize_dof_vector(mass);
     compute_lumped_mass(
         this->solid->mapping(), dofs, hanging, this->material_library, mass);
@@ -314,15 +320,7 @@ namespace softgrasp
     explicit_contact = nullptr;
     this->prepare_run({"time_step", "time_steps", "wall_time"}, trailing);
     setup_integrator();
-    const bool mixed = this->solver_parameters.discretization.formulation ==
-                       Formulation::mixed_upJ;
-    const bool q1 = this->solver_parameters.discretization.degree == 1;
-    this->print_summary(
-        mixed ? (q1 ? "mean dilatation u-p-J (Q1-P0, as the quasi-static "
-                      "solver), explicit dynamic"
-                    : "mean dilatation u-p-J (Q2-P0; the quasi-static "
-                      "solver uses Q2-P1), explicit dynamic")
-              : "displacement formulation, explicit dynamic");
+    this->print_summary("explicit dynamic");
 
     VectorType u, v;
     force->initialize_dof_vector(u);

@@ -5,6 +5,7 @@
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/plane_strain.h>
 #include <softgrasp/explicit/internal_force_operator.h>
+#include <softgrasp/mechanics/element_dilatation.h>
 
 namespace softgrasp
 {
@@ -52,6 +53,90 @@ namespace softgrasp
       }
       return result;
     }
+
+    /**
+     * The linear (P1) element-wise pressure p~ at every quadrature point of
+     * one cell batch (ElementDilatation, lane by lane), from the points'
+     * F. Returns the volumetric energy int U(J~) dV of the batch. A lane
+     * whose projected dilatation is not positive keeps p~ = 0 and lowers
+     * @p min_J to J~ (the caller stops the run).
+     */
+    template <int dim, typename Evaluation, std::size_t n_q>
+    double
+    linear_pressures(const Evaluation                                      &phi,
+                     const std::array<Tensor<2, 3, VectorizedDouble>, n_q> &F,
+                     const unsigned int                 lanes,
+                     const VolumetricEnergy            &energy,
+                     ElementDilatation<dim>            &projection,
+                     std::array<VectorizedDouble, n_q> &pressure,
+                     double                            &min_J)
+    {
+      std::vector<Point<dim>> points(n_q);
+      std::vector<double>     JxW(n_q), J(n_q);
+      double                  volumetric = 0;
+      for (unsigned int lane = 0; lane < lanes; ++lane)
+      {
+        for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const auto x = phi.quadrature_point(q);
+          for (unsigned int d = 0; d < dim; ++d)
+            points[q][d] = x[d][lane];
+          JxW[q] = phi.JxW(q)[lane];
+          J[q]   = determinant(F[q])[lane];
+        }
+        try
+        {
+          projection.reinit(points, JxW, J, energy);
+        }
+        catch (const InvertedMaterialState &inverted)
+        {
+          min_J = std::min(min_J, inverted.J);
+          continue;
+        }
+        for (unsigned int q = 0; q < n_q; ++q)
+        {
+          pressure[q][lane] = projection.pressure(q);
+          volumetric += energy.energy(projection.dilatation(q)) * JxW[q];
+        }
+      }
+      return volumetric;
+    }
+
+    /**
+     * F = I + grad u at every quadrature point of a cell batch, in the
+     * plane-strain slice (F_33 = 1 in 2D); inverted points and padding
+     * lanes get F = I. Accumulates the cells' reference and deformed
+     * volumes and lowers @p min_J to the smallest det F of the real lanes.
+     */
+    template <int dim, typename Evaluation, std::size_t n_q>
+    void deformation(const Evaluation                                &phi,
+                     const unsigned int                               lanes,
+                     std::array<Tensor<2, 3, VectorizedDouble>, n_q> &F,
+                     VectorizedDouble                                &volume,
+                     VectorizedDouble                                &dilated,
+                     double                                          &min_J)
+    {
+      constexpr unsigned int width = VectorizedDouble::size();
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        Tensor<2, dim, VectorizedDouble> F_dim = phi.get_gradient(q);
+        for (unsigned int d = 0; d < dim; ++d)
+          F_dim[d][d] += 1.0;
+        F[q]                     = PlaneStrain::to_3d<dim>(F_dim);
+        const VectorizedDouble J = determinant(F[q]);
+        for (unsigned int lane = 0; lane < width; ++lane)
+        {
+          if (lane < lanes)
+            min_J = std::min(min_J, J[lane]);
+          if (lane >= lanes || !(J[lane] > 0)) // padding or inverted: skip
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                F[q][i][j][lane] = (i == j) ? 1.0 : 0.0;
+        }
+        volume += phi.JxW(q);
+        dilated += determinant(F[q]) * phi.JxW(q);
+      }
+    }
   } // namespace
 
   template <int dim>
@@ -60,11 +145,11 @@ namespace softgrasp
       const DoFHandler<dim>           &dofs,
       const AffineConstraints<double> &constraints,
       const MaterialLibrary           &materials,
-      const bool                       mean_dilatation,
+      const Dilatation                 dilatation,
       const Kernel                     kernel)
       : materials(materials)
       , degree(dofs.get_fe().degree)
-      , mean_dilatation(mean_dilatation)
+      , dilatation(dilatation)
   {
     if (degree != 1 && degree != 2)
       throw InputError("The explicit solver's matrix-free internal forces "
@@ -78,7 +163,9 @@ namespace softgrasp
         MatrixFree<dim, double>::AdditionalData::none;
     additional.mapping_update_flags =
         update_gradients | update_JxW_values |
-        (anisotropic ? update_quadrature_points : update_default);
+        (anisotropic || dilatation == Dilatation::element_linear
+             ? update_quadrature_points
+             : update_default);
     // One material per cell batch.
     const auto &tria = dofs.get_triangulation();
     additional.cell_vectorization_category.assign(tria.n_active_cells(), 0);
@@ -88,9 +175,14 @@ namespace softgrasp
             cell->material_id();
     additional.cell_vectorization_categories_strict = true;
     data.reinit(mapping, dofs, constraints, QGauss<1>(degree + 1), additional);
-    if (kernel == Kernel::vectorized)
+    if (kernel == Kernel::vectorized &&
+        dilatation != Dilatation::element_linear)
       vectorized = std::make_unique<VectorizedForceKernel<dim>>(
-          data, mapping, constraints, materials, mean_dilatation);
+          data,
+          mapping,
+          constraints,
+          materials,
+          dilatation == Dilatation::element_constant);
     if (anisotropic && (!vectorized || !vectorized->other_cells().empty()))
       directions = degree == 1 ? directions_at_points<dim, 1>(data, materials)
                                : directions_at_points<dim, 2>(data, materials);
@@ -117,8 +209,10 @@ namespace softgrasp
       const std::pair<unsigned int, unsigned int> &cells) const
   {
     constexpr unsigned int                   width = VectorizedDouble::size();
+    constexpr unsigned int                   n_q   = Utilities::pow(p + 1, dim);
     FEEvaluation<dim, p, p + 1, dim, double> phi(data);
     const std::vector<StructuralDirections>  isotropic(width);
+    ElementDilatation<dim>                   projection(1);
     for (unsigned int cell = cells.first; cell < cells.second; ++cell)
     {
       phi.reinit(cell);
@@ -126,53 +220,40 @@ namespace softgrasp
       const unsigned int lanes = data.n_active_entries_per_cell_batch(cell);
       const Material    &material =
           materials.get(data.get_cell_iterator(cell, 0)->material_id());
-      // F = I + grad u in the plane, then the plane-strain slice
-      // (F_33 = 1 in 2D); inverted points and padding lanes get F = I.
-      std::array<Tensor<2, 3, VectorizedDouble>, Utilities::pow(p + 1, dim)> F;
-      VectorizedDouble volume = 0, dilated = 0;
-      for (unsigned int q = 0; q < phi.n_q_points; ++q)
-      {
-        Tensor<2, dim, VectorizedDouble> F_dim = phi.get_gradient(q);
-        for (unsigned int d = 0; d < dim; ++d)
-          F_dim[d][d] += 1.0;
-        F[q]                     = PlaneStrain::to_3d<dim>(F_dim);
-        const VectorizedDouble J = determinant(F[q]);
-        for (unsigned int lane = 0; lane < width; ++lane)
-        {
-          if (lane < lanes)
-            min_J = std::min(min_J, J[lane]);
-          if (lane >= lanes || !(J[lane] > 0)) // padding or inverted: skip
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                F[q][i][j][lane] = (i == j) ? 1.0 : 0.0;
-        }
-        volume += phi.JxW(q);
-        dilated += determinant(F[q]) * phi.JxW(q);
-      }
-      // Mean dilatation: one dilatation J_e = v_e / V_e and pressure
-      // p = U'(J_e) per element; energy V_e U(J_e) + int Psi_iso dV.
-      VectorizedDouble pressure = 0;
-      if (mean_dilatation)
+      std::array<Tensor<2, 3, VectorizedDouble>, n_q> F;
+      VectorizedDouble                                volume = 0, dilated = 0;
+      deformation<dim>(phi, lanes, F, volume, dilated, min_J);
+      // u-p-J: the element's pressure p~ at every point. Mean dilatation:
+      // J_e = v_e / V_e and p = U'(J_e), energy V_e U(J_e); linear: the P1
+      // projections of ElementDilatation. Plus int Psi_iso dV below.
+      std::array<VectorizedDouble, n_q> pressure;
+      pressure.fill(VectorizedDouble(0.));
+      const VolumetricEnergy &U = material.volumetric_energy();
+      if (dilatation == Dilatation::element_constant)
         for (unsigned int lane = 0; lane < lanes; ++lane)
         {
           const double J_e = dilated[lane] / volume[lane];
-          pressure[lane]   = material.volumetric_energy().first_derivative(J_e);
-          energy += volume[lane] * material.volumetric_energy().energy(J_e);
+          for (unsigned int q = 0; q < n_q; ++q)
+            pressure[q][lane] = U.first_derivative(J_e);
+          energy += volume[lane] * U.energy(J_e);
         }
-      for (unsigned int q = 0; q < phi.n_q_points; ++q)
+      else if (dilatation == Dilatation::element_linear)
+        energy += linear_pressures<dim>(
+            phi, F, lanes, U, projection, pressure, min_J);
+      for (unsigned int q = 0; q < n_q; ++q)
       {
         const StructuralDirections *point_directions =
-            directions.empty()
-                ? isotropic.data()
-                : &directions[(cell * phi.n_q_points + q) * width];
+            directions.empty() ? isotropic.data()
+                               : &directions[(cell * n_q + q) * width];
         Tensor<2, 3, VectorizedDouble> P;
         VectorizedDouble               psi;
-        material.first_piola_batch(F[q],
-                                   point_directions,
-                                   lanes,
-                                   P,
-                                   psi,
-                                   mean_dilatation ? &pressure : nullptr);
+        material.first_piola_batch(
+            F[q],
+            point_directions,
+            lanes,
+            P,
+            psi,
+            dilatation == Dilatation::pointwise ? nullptr : &pressure[q]);
         const VectorizedDouble JxW = phi.JxW(q);
         for (unsigned int lane = 0; lane < lanes; ++lane)
           energy += psi[lane] * JxW[lane];

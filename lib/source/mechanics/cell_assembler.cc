@@ -47,7 +47,8 @@ namespace softgrasp
       const Mapping<dim>        &mapping,
       const FiniteElement<dim>  &fe,
       const Quadrature<dim>     &quadrature,
-      const Quadrature<dim - 1> &face_quadrature)
+      const Quadrature<dim - 1> &face_quadrature,
+      const unsigned int         dilatation_degree)
       : fe_values(mapping,
                   fe,
                   quadrature,
@@ -64,7 +65,7 @@ namespace softgrasp
       , JxW(quadrature.size())
       , grad_Nx(quadrature.size(),
                 std::vector<Tensor<2, dim>>(fe.n_dofs_per_cell()))
-      , dilatation(fe.degree - 1)
+      , dilatation(dilatation_degree)
   {
   }
 

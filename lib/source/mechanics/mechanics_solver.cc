@@ -358,14 +358,14 @@ namespace softgrasp
   }
 
   template <int dim>
-  void
-  MechanicsSolver<dim>::print_summary(const std::string &discretization) const
+  void MechanicsSolver<dim>::print_summary(const std::string &integrator) const
   {
     pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells, "
-          << solid->n_dofs() << " displacement dofs (Q"
-          << solver_parameters.discretization.degree << ", " << discretization
-          << "), " << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s) x "
-          << MultithreadInfo::n_threads() << " thread(s)." << std::endl;
+          << solid->n_dofs() << " displacement dofs ("
+          << solver_parameters.discretization.element_name() << ", "
+          << integrator << "), " << Utilities::MPI::n_mpi_processes(comm)
+          << " MPI rank(s) x " << MultithreadInfo::n_threads() << " thread(s)."
+          << std::endl;
     for (const auto id : material_library.material_ids())
       pcout << "Material " << static_cast<unsigned>(id) << ": "
             << material_library.get(id).summary() << std::endl;

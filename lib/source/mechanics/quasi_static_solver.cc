@@ -113,10 +113,7 @@ namespace softgrasp
       solid->update_ghosts();
       mortar->accept_step(*solid, state.time);
     }
-    this->print_summary(solver_parameters.discretization.formulation ==
-                                Formulation::mixed_upJ
-                            ? "mixed u-p-J formulation"
-                            : "displacement formulation");
+    this->print_summary(dynamic() ? "implicit dynamic" : "quasi-static");
 
     auto &progress = this->progress;
     progress.start(state.time, time.end_time);

@@ -270,8 +270,11 @@ namespace softgrasp
         CellFilter(IteratorFilters::LocallyOwnedCell(), dofs.end()),
         worker,
         copier,
-        AssemblyScratchData<dim>(
-            reference_mapping, finite_element, quadrature, face_quadrature),
+        AssemblyScratchData<dim>(reference_mapping,
+                                 finite_element,
+                                 quadrature,
+                                 face_quadrature,
+                                 parameters.discretization.pressure_degree()),
         AssemblyCopyData());
 
     if (with_matrix)

@@ -14,6 +14,9 @@ namespace softgrasp
     const std::vector<std::pair<std::string, Formulation>> formulation_names = {
         {"displacement", Formulation::displacement},
         {"mixed u-p-J", Formulation::mixed_upJ}};
+    const std::vector<std::pair<std::string, PressureDegree>>
+        pressure_degree_names = {{"k-1", PressureDegree::below_displacement},
+                                 {"0", PressureDegree::constant}};
     const std::vector<std::pair<std::string, TimeIntegrator>> integrator_names =
         {{"quasi-static", TimeIntegrator::quasi_static},
          {"implicit dynamic", TimeIntegrator::implicit_dynamic},
@@ -65,6 +68,17 @@ namespace softgrasp
         "0.5). 'mixed u-p-J': three-field formulation with element-wise "
         "discontinuous pressure and dilatation of degree k-1, condensed per "
         "element; free of volumetric locking.");
+    prm.declare_entry(
+        "Pressure degree",
+        "k-1",
+        Patterns::Selection(selection(pressure_degree_names)),
+        "Degree of the element-wise discontinuous pressure and dilatation of "
+        "'mixed u-p-J' (k = 'Polynomial degree'). 'k-1': Q1-P0 and Q2-P1, "
+        "the inf-sup stable pairs. '0': one pressure and dilatation per "
+        "element (Q2-P0, mean dilatation): cheaper, coarser pressure. Both "
+        "solvers "
+        "use the same element, so switching 'Time/Integrator' keeps the "
+        "discretisation. Unit: 1.");
     prm.leave_subsection();
   }
 
@@ -73,7 +87,16 @@ namespace softgrasp
     prm.enter_subsection("Finite element");
     degree      = prm.get_integer("Polynomial degree");
     formulation = lookup(formulation_names, prm.get("Formulation"));
+    pressure    = lookup(pressure_degree_names, prm.get("Pressure degree"));
     prm.leave_subsection();
+  }
+
+  std::string DiscretizationParameters::element_name() const
+  {
+    const std::string q = "Q" + std::to_string(degree);
+    if (formulation == Formulation::displacement)
+      return q + " displacement";
+    return q + "-P" + std::to_string(pressure_degree()) + " u-p-J";
   }
 
   void TimeParameters::declare_parameters(ParameterHandler &prm)

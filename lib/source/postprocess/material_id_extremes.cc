@@ -105,12 +105,23 @@ namespace softgrasp
       table.add_value("name", materials.get(id).name());
       table.add_value("e_max", e.e_max);
       table.add_value("e_min", e.e_min);
+      table.add_value("E_GL_max", green_lagrange_strain(e.e_max));
+      table.add_value("E_GL_min", green_lagrange_strain(e.e_min));
+      table.add_value("log_strain_max", logarithmic_strain(e.e_max));
+      table.add_value("log_strain_min", logarithmic_strain(e.e_min));
       table.add_value("J_min", e.J_min);
       table.add_value("J_max", e.J_max);
       table.add_value("von_Mises_max_Pa", e.von_mises_max);
     }
-    for (const char *column :
-         {"e_max", "e_min", "J_min", "J_max", "von_Mises_max_Pa"})
+    for (const char *column : {"e_max",
+                               "e_min",
+                               "E_GL_max",
+                               "E_GL_min",
+                               "log_strain_max",
+                               "log_strain_min",
+                               "J_min",
+                               "J_max",
+                               "von_Mises_max_Pa"})
     {
       table.set_scientific(column, true);
       table.set_precision(column, 4);

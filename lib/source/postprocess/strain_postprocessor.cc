@@ -39,10 +39,10 @@ namespace softgrasp
       // the same principal stretches as Green-Lagrange and logarithmic
       // strains
       const double l_max = p.stretches[0], l_min = p.stretches[2];
-      out[4 + dim]     = (l_max * l_max - 1) / 2;
-      out[4 + dim + 1] = (l_min * l_min - 1) / 2;
-      out[4 + dim + 2] = std::log(l_max);
-      out[4 + dim + 3] = std::log(l_min);
+      out[4 + dim]     = green_lagrange_strain(l_max - 1);
+      out[4 + dim + 1] = green_lagrange_strain(l_min - 1);
+      out[4 + dim + 2] = logarithmic_strain(l_max - 1);
+      out[4 + dim + 3] = logarithmic_strain(l_min - 1);
     }
   }
 

@@ -328,7 +328,8 @@ namespace softgrasp
     {
       std::ofstream out(tissue_file);
       out << std::setprecision(8) << "material_id,tissue,volume_m3"
-          << location_columns("e_max") << location_columns("e_min");
+          << location_columns("e_max") << location_columns("e_min")
+          << ",E_GL_max,E_GL_min,log_strain_max,log_strain_min";
       for (const double t : limits.compressive_strains)
         out << ",volume_compressed_beyond_" << threshold_label(t) << "_m3";
       for (const double t : limits.tensile_strains)
@@ -340,6 +341,10 @@ namespace softgrasp
             << row.volume;
         write_location(out, row.e_max);
         write_location(out, row.e_min);
+        out << ',' << green_lagrange_strain(row.e_max.value) << ','
+            << green_lagrange_strain(row.e_min.value) << ','
+            << logarithmic_strain(row.e_max.value) << ','
+            << logarithmic_strain(row.e_min.value);
         for (const double v : row.volume_compressed)
           out << ',' << v;
         for (const double v : row.volume_stretched)
@@ -387,7 +392,11 @@ namespace softgrasp
           << ", " << std::setprecision(4) << 1e6 * row.volume << " cm^3):\n"
           << "    e_max " << std::setprecision(3) << row.e_max.value << ' '
           << where(row.e_max) << "\n    e_min " << row.e_min.value << ' '
-          << where(row.e_min) << '\n';
+          << where(row.e_min) << "\n    Green-Lagrange "
+          << green_lagrange_strain(row.e_max.value) << " / "
+          << green_lagrange_strain(row.e_min.value) << ", logarithmic "
+          << logarithmic_strain(row.e_max.value) << " / "
+          << logarithmic_strain(row.e_min.value) << " (largest / smallest)\n";
       for (std::size_t t = 0; t < row.volume_compressed.size(); ++t)
         out << "    compressed beyond " << limits.compressive_strains[t] << ": "
             << std::setprecision(3) << 1e6 * row.volume_compressed[t]

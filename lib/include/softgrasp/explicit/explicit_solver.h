@@ -28,12 +28,11 @@ namespace softgrasp
    * undone, the last good state is written (VTU and checkpoint), and the
    * run stops with a SolverFailure naming the cause and the fix.
    *
-   * Formulations: displacement, or with 'mixed u-p-J' mean dilatation
-   * (one dilatation and pressure per element; for Q1 the quasi-static
-   * solver's Q1-P0, for Q2 a P0 pressure where the quasi-static solver
-   * uses P1). Loads: prescribed displacements
-   * (Dirichlet, as functions of t) and
-   * contact with the rigid bodies. Tractions, pressures and gravity are
+   * Formulations: displacement, or 'mixed u-p-J' with the quasi-static
+   * solver's element ('Finite element/Pressure degree': Q1-P0, Q2-P1 or
+   * Q2-P0; the pressure is projected element by element). Loads:
+   * prescribed displacements (Dirichlet, as functions of t) and contact
+   * with the rigid bodies. Tractions, pressures and gravity are
    * not offered here yet (an InputError says so).
    */
   template <int dim> class ExplicitSolver : public MechanicsSolver<dim>

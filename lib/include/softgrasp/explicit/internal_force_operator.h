@@ -43,6 +43,14 @@ namespace softgrasp
       reference   ///< FEEvaluation for every cell
     };
 
+    /// The volumetric response.
+    enum class Dilatation
+    {
+      pointwise,        ///< J = det F at each point (displacement form)
+      element_constant, ///< u-p-J with P0 pressure (mean dilatation)
+      element_linear    ///< u-p-J with P1 pressure (Q2-P1)
+    };
+
     /// What apply() found besides the forces.
     struct Result
     {
@@ -53,19 +61,23 @@ namespace softgrasp
     /**
      * @p constraints: hanging-node constraints only (Dirichlet values are
      * the integrator's business; their rows keep their internal force, the
-     * reaction). With @p mean_dilatation, the volumetric response uses
-     * one dilatation per element, J_e = v_e / V_e (the element's deformed
-     * over its reference volume) and the pressure p = U'(J_e): the u-p-J
-     * form with constant pressure per element, which does not lock for
-     * nearly incompressible tissue (for Q1 it is the quasi-static solver's
-     * Q1-P0 element).
+     * reaction). With Dilatation::element_constant, the volumetric
+     * response uses one dilatation per element, J_e = v_e / V_e (the
+     * element's deformed over its reference volume) and the pressure
+     * p = U'(J_e): the u-p-J form with constant pressure per element, which
+     * does not lock for nearly incompressible tissue. With
+     * Dilatation::element_linear, J~ and p~ are the element-wise linear L2
+     * projections of ElementDilatation (Q2-P1). Either is the quasi-static
+     * solver's element of the same pressure degree. The vectorised kernel
+     * has no linear projection: element_linear evaluates every cell with
+     * the reference kernel.
      */
     InternalForceOperator(const dealii::Mapping<dim>              &mapping,
                           const dealii::DoFHandler<dim>           &dofs,
                           const dealii::AffineConstraints<double> &constraints,
                           const MaterialLibrary                   &materials,
-                          const bool   mean_dilatation = false,
-                          const Kernel kernel          = Kernel::vectorized);
+                          const Dilatation dilatation = Dilatation::pointwise,
+                          const Kernel     kernel     = Kernel::vectorized);
 
     void initialize_dof_vector(VectorType &vector) const;
 
@@ -94,7 +106,7 @@ namespace softgrasp
     std::unique_ptr<VectorizedForceKernel<dim>> vectorized;
     const MaterialLibrary                      &materials;
     unsigned int                                degree;
-    bool                                        mean_dilatation;
+    Dilatation                                  dilatation;
     /// Structural directions per (cell batch, quadrature point, lane), for
     /// anisotropic materials only (empty otherwise).
     std::vector<StructuralDirections> directions;

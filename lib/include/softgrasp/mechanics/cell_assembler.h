@@ -23,7 +23,8 @@ namespace softgrasp
     AssemblyScratchData(const dealii::Mapping<dim>        &mapping,
                         const dealii::FiniteElement<dim>  &fe,
                         const dealii::Quadrature<dim>     &quadrature,
-                        const dealii::Quadrature<dim - 1> &face_quadrature);
+                        const dealii::Quadrature<dim - 1> &face_quadrature,
+                        const unsigned int                 dilatation_degree);
     AssemblyScratchData(const AssemblyScratchData &other);
 
     dealii::FEValues<dim>                            fe_values;

@@ -124,8 +124,9 @@ namespace softgrasp
     void write_checkpoint(
         const std::vector<const dealii::TrilinosWrappers::MPI::Vector *>
             &extra = {});
-    /// The mesh and material lines at the start of a run.
-    void print_summary(const std::string &discretization) const;
+    /// The mesh, element and material lines at the start of a run;
+    /// @p integrator names the time integration.
+    void print_summary(const std::string &integrator) const;
     /// Lock the output directory (and clear an earlier run's results).
     void claim_output_directory();
     /// Refuse a body held by nothing, and contact without bodies or

@@ -48,8 +48,8 @@ namespace softgrasp
     void set_inertia(const dealii::TrilinosWrappers::MPI::Vector &u_start,
                      const double                                 dt);
     /// After a converged step of size @p dt: v = (u - u_start)/dt.
-    void update_velocity(const dealii::TrilinosWrappers::MPI::Vector &u_start,
-                         const double                                 dt);
+    void   update_velocity(const dealii::TrilinosWrappers::MPI::Vector &u_start,
+                           const double                                 dt);
     double kinetic_energy() const;
     /// Implicit dynamics: the forces of the initial state u = 0 at t = 0,
     /// for its history row (no equilibrium is solved for).

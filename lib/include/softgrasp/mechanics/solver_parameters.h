@@ -20,6 +20,14 @@ namespace softgrasp
     mixed_upJ
   };
 
+  /// Degree of the element-wise pressure and dilatation of 'mixed u-p-J'
+  /// ("Finite element/Pressure degree").
+  enum class PressureDegree
+  {
+    below_displacement, ///< k - 1: Q1-P0, Q2-P1 (the default)
+    constant            ///< 0: Q1-P0, Q2-P0 (one pressure per element)
+  };
+
   /// Linear solver of each Newton step.
   enum class LinearSolverType
   {
@@ -44,8 +52,18 @@ namespace softgrasp
   /// Finite element discretisation ("Finite element" subsection).
   struct DiscretizationParameters
   {
-    unsigned int degree      = 1; ///< polynomial degree of u, 1 or 2
-    Formulation  formulation = Formulation::displacement;
+    unsigned int   degree      = 1; ///< polynomial degree of u, 1 or 2
+    Formulation    formulation = Formulation::displacement;
+    PressureDegree pressure    = PressureDegree::below_displacement;
+
+    /// The degree of the discontinuous pressure and dilatation of the
+    /// mixed formulation (0 or 1); the same in every solver.
+    unsigned int pressure_degree() const
+    {
+      return pressure == PressureDegree::constant ? 0 : degree - 1;
+    }
+    /// The element's name, e.g. "Q2-P1 u-p-J" or "Q1 displacement".
+    std::string element_name() const;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

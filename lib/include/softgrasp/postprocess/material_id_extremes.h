@@ -14,8 +14,9 @@ namespace softgrasp
    * Extremes of the strain and stress measures over the quadrature points of
    * each material id, reduced over all MPI ranks: the table a study prints
    * to answer "how much did the skin / fat / muscle strain?". Measures:
-   * largest e_max and smallest e_min (1), smallest and largest J (1),
-   * largest von Mises stress (Pa).
+   * largest e_max and smallest e_min (1; in the table also as Green-Lagrange
+   * and logarithmic strains, which are monotone in e), smallest and largest J
+   * (1), largest von Mises stress (Pa).
    */
   template <int dim> class MaterialIdExtremes
   {

@@ -2,6 +2,7 @@
 #define softgrasp_postprocess_principal_strains_h
 
 #include <array>
+#include <cmath>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
@@ -33,6 +34,21 @@ namespace softgrasp
       return strains[2];
     }
   };
+
+  /// The Green-Lagrange principal strain (lambda^2 - 1)/2 of the principal
+  /// strain @p e = lambda - 1 (both 1). Monotone in e, so an extreme of e
+  /// over a tissue is also an extreme of this measure, at the same point.
+  inline double green_lagrange_strain(const double e)
+  {
+    return ((1 + e) * (1 + e) - 1) / 2;
+  }
+
+  /// The logarithmic (Hencky) principal strain ln lambda of @p e =
+  /// lambda - 1 (both 1); monotone in e.
+  inline double logarithmic_strain(const double e)
+  {
+    return std::log1p(e);
+  }
 
   /// Von Mises equivalent stress sqrt(3/2 dev(sigma):dev(sigma)) (Pa).
   double von_mises_stress(const dealii::SymmetricTensor<2, 3> &sigma);
