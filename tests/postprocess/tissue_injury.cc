@@ -22,6 +22,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <fstream>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/materials/material_library.h>
@@ -151,6 +152,39 @@ main(int argc, char **argv)
                     << "e_max " << injury.tissues()[0].e_max.value
                     << " (exact 0.2), largest volume error " << error
                     << std::endl;
+    if (refinement == 3 && Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      // The table's Green-Lagrange and logarithmic strains at the extremes'
+      // locations: lambda = 1 + 2 b Y (stretch) and 1 - 2 a X (compression).
+      injury.write_csv("injury.csv", "pressure.csv");
+      std::ifstream in("injury.csv");
+      std::string   header, row;
+      std::getline(in, header);
+      std::getline(in, row);
+      const auto names  = Utilities::split_string_list(header, ',');
+      const auto values = Utilities::split_string_list(row, ',');
+      const auto column = [&](const std::string &name)
+      {
+        const auto it = std::find(names.begin(), names.end(), name);
+        SG_CHECK(it != names.end(), "the column exists");
+        return std::stod(values[it - names.begin()]);
+      };
+      const auto  &t     = injury.tissues()[0];
+      const double l_max = 1 + 2 * b * t.e_max.reference[1];
+      const double l_min = 1 - 2 * a * t.e_min.reference[0];
+      bool         exact = true;
+      for (const auto &[name, value] :
+           std::vector<std::pair<std::string, double>>{
+               {"E_GL_max", (l_max * l_max - 1) / 2},
+               {"E_GL_min", (l_min * l_min - 1) / 2},
+               {"log_strain_max", std::log(l_max)},
+               {"log_strain_min", std::log(l_min)}})
+        exact = exact && std::abs(column(name) - value) < 1e-7;
+      dealii::deallog << "CSV: Green-Lagrange and logarithmic strains of the "
+                         "extremes equal their closed forms: "
+                      << exact << std::endl;
+      SG_CHECK(exact, "strain measures in the table");
+    }
     SG_CHECK(error <= last_error, "the volume errors do not grow");
     last_error = error;
   }

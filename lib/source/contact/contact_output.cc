@@ -6,6 +6,24 @@ namespace softgrasp
 {
   using namespace dealii;
 
+  std::pair<Eigen::Vector3d, Eigen::Vector3d>
+  body_resultant(const RigidBody                     &body,
+                 const std::vector<GeomContactForce> &forces,
+                 const double                         time)
+  {
+    const Pose      body_pose = body.trajectory().pose(time);
+    Eigen::Vector3d total     = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque    = Eigen::Vector3d::Zero();
+    for (unsigned int g = 0; g < forces.size(); ++g)
+    {
+      const Pose geom = body.geom_pose(g, time);
+      total += forces[g].force;
+      torque += forces[g].moment +
+                (geom.position - body_pose.position).cross(forces[g].force);
+    }
+    return {total, torque};
+  }
+
   template <int dim>
   ContactOutput<dim>::ContactOutput(const ContactSurface<dim> &contact)
       : contact(contact)
@@ -272,9 +290,6 @@ namespace softgrasp
     };
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      Eigen::Vector3d total     = Eigen::Vector3d::Zero();
-      Eigen::Vector3d torque    = Eigen::Vector3d::Zero();
-      const Pose      body_pose = bodies[b].trajectory().pose(contact.time());
       for (unsigned int g = 0; g < forces[b].size(); ++g)
       {
         const auto &f = forces[b][g];
@@ -291,11 +306,9 @@ namespace softgrasp
         row.push_back(f.area);
         row.push_back(f.active);
         row.push_back(f.slipping);
-        const Pose geom = bodies[b].geom_pose(g, contact.time());
-        total += f.force;
-        torque +=
-            f.moment + (geom.position - body_pose.position).cross(f.force);
       }
+      const auto [total, torque] =
+          body_resultant(bodies[b], forces[b], contact.time());
       vector(total);
       vector(torque);
     }

@@ -77,17 +77,8 @@ namespace softgrasp
     const auto &list = bodies.bodies();
     for (unsigned int b = 0; b < list.size() && b < last.forces.size(); ++b)
     {
-      const Pose      body_pose = list[b].trajectory().pose(last.time);
-      Eigen::Vector3d total     = Eigen::Vector3d::Zero();
-      Eigen::Vector3d torque    = Eigen::Vector3d::Zero();
-      for (unsigned int g = 0; g < last.forces[b].size(); ++g)
-      {
-        const auto &f    = last.forces[b][g];
-        const Pose  pose = list[b].geom_pose(g, last.time);
-        total += f.force;
-        torque +=
-            f.moment + (pose.position - body_pose.position).cross(f.force);
-      }
+      const auto [total, torque] =
+          body_resultant(list[b], last.forces[b], last.time);
       out << "  body " << list[b].name() << ": F = " << vector_text(total, 3)
           << ' ' << unit << ", M = " << vector_text(torque, 3) << ' ' << m_unit
           << " about the body origin\n";

@@ -39,6 +39,13 @@ namespace softgrasp
     }
   };
 
+  /// The resultant force (N) and moment about the body's origin (N m) of
+  /// the forces @p forces on the geoms of @p body at time @p time (s).
+  std::pair<Eigen::Vector3d, Eigen::Vector3d>
+  body_resultant(const RigidBody                     &body,
+                 const std::vector<GeomContactForce> &forces,
+                 const double                         time);
+
   /**
    * The forces on every geom, [body][geom], at one recorded step: the
    * typed contact history that studies read (rather than CSV columns).

@@ -2,7 +2,6 @@
 #define softgrasp_rigid_rigid_body_set_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <optional>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/rigid/rigid_body.h>
 #include <string>
