@@ -16,19 +16,6 @@ using namespace softgrasp_tests;
 
 namespace
 {
-  std::string trajectory(const double depth, const double T)
-  {
-    std::ostringstream s;
-    s.precision(12);
-    for (unsigned int k = 0; k <= 40; ++k)
-    {
-      const double t = T * k / 40;
-      const double d = depth * (1 - std::cos(M_PI * t / T)) / 2;
-      s << (k ? "; " : "") << t << ": 0, 0, " << 0.01 - d << ", 1, 0, 0, 0";
-    }
-    return s.str();
-  }
-
   std::string prm(const std::string &integrator, const std::string &pressure)
   {
     const double       depth = 3e-4, T = 0.25;

@@ -21,21 +21,6 @@ using namespace softgrasp_tests;
 
 namespace
 {
-  template <int dim>
-  MeshFactory<dim> factory_from(const std::string &type,
-                                const std::string &subsection,
-                                const std::string &entries)
-  {
-    ParameterHandler prm;
-    MeshFactory<dim>::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Mesh\n set Type = " + type +
-                                "\n subsection " + subsection + "\n" + entries +
-                                " end\nend\n");
-    MeshFactory<dim> factory;
-    factory.parse_parameters(prm);
-    return factory;
-  }
-
   /// The generated mesh refined once, written as Gmsh with its ids.
   template <int dim>
   void write_file(MeshFactory<dim> generated, const std::string &name)

@@ -23,17 +23,11 @@ namespace
   MeshFactory<dim> factory_from(const std::string &type,
                                 const std::string &entries)
   {
-    ParameterHandler prm;
-    MeshFactory<dim>::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Mesh\n set Type = " + type +
-                                "\n subsection " +
-                                (type == "ball"   ? std::string("Ball")
-                                 : type == "tube" ? std::string("Tube")
-                                                  : std::string("Block")) +
-                                "\n" + entries + " end\nend\n");
-    MeshFactory<dim> factory;
-    factory.parse_parameters(prm);
-    return factory;
+    return softgrasp_tests::factory_from<dim>(type,
+                                              type == "ball"   ? "Ball"
+                                              : type == "tube" ? "Tube"
+                                                               : "Block",
+                                              entries);
   }
 
   /// Refine the mesh of @p factory 0, 1, 2 times; the volume and boundary

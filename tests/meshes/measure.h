@@ -9,7 +9,9 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/tria.h>
 #include <map>
+#include <softgrasp/meshes/mesh_factory.h>
 #include <softgrasp/meshes/mesh_generator.h>
+#include <string>
 
 namespace softgrasp_tests
 {
@@ -40,6 +42,23 @@ namespace softgrasp_tests
             area[cell->face(f)->boundary_id()] += face_values.JxW(q);
         }
     }
+  }
+
+  /// A mesh factory of 'Mesh/Type = @p type' with @p entries in its
+  /// subsection @p subsection.
+  template <int dim>
+  softgrasp::MeshFactory<dim> factory_from(const std::string &type,
+                                           const std::string &subsection,
+                                           const std::string &entries)
+  {
+    dealii::ParameterHandler prm;
+    softgrasp::MeshFactory<dim>::declare_parameters(prm);
+    prm.parse_input_from_string("subsection Mesh\n set Type = " + type +
+                                "\n subsection " + subsection + "\n" + entries +
+                                " end\nend\n");
+    softgrasp::MeshFactory<dim> factory;
+    factory.parse_parameters(prm);
+    return factory;
   }
 
   /// A placement that turns the x axis to z (about y) and moves the mesh.
