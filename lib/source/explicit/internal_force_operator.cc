@@ -86,7 +86,7 @@ namespace softgrasp
         }
         try
         {
-          projection.reinit(points, JxW, J, energy);
+          projection.reinit(points, JxW, J, energy, false);
         }
         catch (const InvertedMaterialState &inverted)
         {

@@ -18,7 +18,8 @@ namespace softgrasp
   void ElementDilatation<dim>::reinit(const std::vector<Point<dim>> &points,
                                       const std::vector<double>     &JxW,
                                       const std::vector<double>     &J,
-                                      const VolumetricEnergy        &energy)
+                                      const VolumetricEnergy        &energy,
+                                      const bool with_stiffness)
   {
     n_points = points.size();
     values.assign(n_functions * n_points, 1.0);
@@ -36,9 +37,11 @@ namespace softgrasp
           values[(1 + d) * n_points + q] = (points[q][d] - center[d]) / h;
     }
 
-    // Mass matrix and its inverse.
-    FullMatrix<double> M(n_functions, n_functions);
-    Vector<double>     b(n_functions);
+    // Mass matrix and its inverse (members: no allocation per cell).
+    FullMatrix<double> &M = mass;
+    Vector<double>     &b = moments;
+    M.reinit(n_functions, n_functions);
+    b.reinit(n_functions);
     for (unsigned int q = 0; q < n_points; ++q)
       for (unsigned int a = 0; a < n_functions; ++a)
       {
@@ -46,11 +49,12 @@ namespace softgrasp
         for (unsigned int c = 0; c < n_functions; ++c)
           M(a, c) += basis(a, q) * basis(c, q) * JxW[q];
       }
-    FullMatrix<double> M_inverse(n_functions, n_functions);
+    M_inverse.reinit(n_functions, n_functions);
     M_inverse.invert(M);
 
     // J~ = Pi_h J
-    Vector<double> J_coefficients(n_functions);
+    Vector<double> &J_coefficients = coefficients;
+    J_coefficients.reinit(n_functions);
     M_inverse.vmult(J_coefficients, b);
     J_tilde.assign(n_points, 0.0);
     for (unsigned int q = 0; q < n_points; ++q)
@@ -61,22 +65,16 @@ namespace softgrasp
         throw InvertedMaterialState(J_tilde[q]);
     }
 
-    // p~ = Pi_h U'(J~) and K_JJ
-    Vector<double>     c(n_functions);
-    FullMatrix<double> K_JJ(n_functions, n_functions);
+    // p~ = Pi_h U'(J~) (b reused for its moments)
+    b = 0;
     for (unsigned int q = 0; q < n_points; ++q)
     {
-      const double dU  = energy.first_derivative(J_tilde[q]);
-      const double d2U = energy.second_derivative(J_tilde[q]);
+      const double dU = energy.first_derivative(J_tilde[q]);
       for (unsigned int a = 0; a < n_functions; ++a)
-      {
-        c[a] += basis(a, q) * dU * JxW[q];
-        for (unsigned int e = 0; e < n_functions; ++e)
-          K_JJ(a, e) += basis(a, q) * d2U * basis(e, q) * JxW[q];
-      }
+        b[a] += basis(a, q) * dU * JxW[q];
     }
-    Vector<double> p_coefficients(n_functions);
-    M_inverse.vmult(p_coefficients, c);
+    Vector<double> &p_coefficients = coefficients;
+    M_inverse.vmult(p_coefficients, b);
     p_tilde.assign(n_points, 0.0);
     p_mean = 0;
     for (unsigned int q = 0; q < n_points; ++q)
@@ -86,9 +84,19 @@ namespace softgrasp
       p_mean += p_tilde[q] * JxW[q] / volume;
     }
 
-    // A = M^-1 K_JJ M^-1
+    if (!with_stiffness)
+      return;
+    // A = M^-1 K_JJ M^-1, K_JJ = int N U''(J~) N^T dV (in mass)
+    M = 0;
+    for (unsigned int q = 0; q < n_points; ++q)
+    {
+      const double d2U = energy.second_derivative(J_tilde[q]);
+      for (unsigned int a = 0; a < n_functions; ++a)
+        for (unsigned int e = 0; e < n_functions; ++e)
+          M(a, e) += basis(a, q) * d2U * basis(e, q) * JxW[q];
+    }
     FullMatrix<double> tmp(n_functions, n_functions);
-    M_inverse.mmult(tmp, K_JJ);
+    M_inverse.mmult(tmp, M);
     tmp.mmult(kernel, M_inverse);
   }
 

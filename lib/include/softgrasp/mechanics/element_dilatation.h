@@ -39,11 +39,14 @@ namespace softgrasp
      * Compute J~ and p~ on one element from the quadrature points
      * @p points (reference, m), weights @p JxW (m^3) and the pointwise
      * J = det F at them. Throws InvertedMaterialState if J~ <= 0 anywhere.
+     * Without @p with_stiffness the condensed kernel is not computed (the
+     * explicit solver needs the forces only).
      */
     void reinit(const std::vector<dealii::Point<dim>> &points,
                 const std::vector<double>             &JxW,
                 const std::vector<double>             &J,
-                const VolumetricEnergy                &energy);
+                const VolumetricEnergy                &energy,
+                const bool                             with_stiffness = true);
 
     unsigned int n_basis() const;
     /// Basis function @p a at quadrature point @p q.
@@ -65,6 +68,9 @@ namespace softgrasp
     std::vector<double>        p_tilde, J_tilde;
     double                     p_mean = 0;
     dealii::FullMatrix<double> kernel;
+    /// Scratch of reinit(), kept to avoid allocations per cell.
+    dealii::FullMatrix<double> mass, M_inverse;
+    dealii::Vector<double>     moments, coefficients;
   };
 } // namespace softgrasp
 
