@@ -214,4 +214,5 @@ main()
   refused("face 0: sphere 0, 0, 0", "does not start with");
   refused("boundary 0: cylinder 1, 0, 0", "through");
   refused("boundary 0: sphere 0, 0", "Mesh/File/Manifolds");
+  refused("boundary 0: sphere nan, 0, 0", "not a finite number");
 }

@@ -96,7 +96,13 @@ namespace softgrasp
                        "D problem. Fix: give one number per coordinate.");
     Point<dim> p;
     for (unsigned int d = 0; d < dim; ++d)
+    {
+      if (!std::isfinite(values[d]))
+        throw InputError("Parameter '" + path + "' = '" + text +
+                         "' has a coordinate that is not a finite number. "
+                         "Fix: give finite coordinates (m).");
       p[d] = values[d];
+    }
     return p;
   }
 
