@@ -61,10 +61,11 @@ main(int argc, char **argv)
   if (Utilities::MPI::this_mpi_process(comm) == 0)
   {
     const auto &history = solver.history();
-    double      newton = 0, changes = 0;
+    double      newton = 0, changes = 0, linear = 0;
     for (std::size_t row = 1; row < history.rows.size(); ++row)
     {
       newton += history.value(row, "newton_iterations");
+      linear += history.value(row, "linear_iterations");
       changes += history.value(row, "active_set_changes");
     }
     const double n_steps = history.rows.size() - 1;
@@ -78,6 +79,7 @@ main(int argc, char **argv)
               << " mm, error " << 100 * (radius / exact.radius - 1) << " %"
               << "\n  Newton iterations per step " << newton / n_steps
               << ", active-set changes per step " << changes / n_steps
+              << "\n  linear iterations per Newton step " << linear / newton
               << std::endl;
     const double steps_time = times["contact"] + times["assembly"] +
                               times["residual"] + times["linear solve"];

@@ -1,6 +1,8 @@
+#include <Eigen/LU>
 #include <cmath>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector_operation.h>
+#include <set>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/contact/mortar_contact.h>
 #include <sstream>
@@ -29,6 +31,9 @@ namespace softgrasp
     for (auto &v : row_combination)
       v.reinit(owned, ghosts, this->comm);
     governed.reinit(owned, ghosts, this->comm);
+    constraint_coefficients.reinit(owned, ghosts, this->comm);
+    constraint_values.reinit(owned, ghosts, this->comm);
+    find_relevant_nodes(system);
     owned_scratch.reinit(owned, this->comm);
     fd_step = 1e-7 * system.length_scale();
     law.assign(this->node_list.size(), NodeLaw());
@@ -40,6 +45,37 @@ namespace softgrasp
           this->parameters.complementarity_factor * 2 * shear_modulus * h;
       law[j].c_n = law[j].c;
       law[j].c_t = law[j].c;
+    }
+  }
+
+  template <int dim>
+  void MortarContact<dim>::find_relevant_nodes(const SolidSystem<dim> &system)
+  {
+    const auto                          &fe = system.fe();
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    std::set<types::global_dof_index>    seen;
+    relevant_nodes.clear();
+    for (const auto &cell : system.dof_handler().active_cell_iterators())
+    {
+      if (!cell->is_locally_owned())
+        continue;
+      cell->get_dof_indices(indices);
+      for (const auto f : cell->face_indices())
+      {
+        if (!cell->face(f)->at_boundary() ||
+            !this->is_slave_boundary(cell->face(f)->boundary_id()))
+          continue;
+        for (const auto &point : cell_nodes)
+        {
+          if (!fe.has_support_on_face(point[0], f) ||
+              !seen.insert(indices[point[0]]).second)
+            continue;
+          std::array<types::global_dof_index, dim> node;
+          for (unsigned int c = 0; c < dim; ++c)
+            node[c] = indices[point[c]];
+          relevant_nodes.push_back(node);
+        }
+      }
     }
   }
 
@@ -99,10 +135,13 @@ namespace softgrasp
     std::array<TrilinosWrappers::MPI::Vector, dim> combination;
     for (auto &v : combination)
       v.reinit(owned_scratch, true), v = 0;
-    TrilinosWrappers::MPI::Vector is_governed(owned_scratch);
-    is_governed = 0;
+    TrilinosWrappers::MPI::Vector is_governed(owned_scratch),
+        coefficients(owned_scratch), values(owned_scratch);
+    is_governed  = 0;
+    coefficients = 0;
+    values       = 0;
 
-    unsigned int active = 0, slipping = 0, changes = 0;
+    unsigned int active = 0, slipping = 0, changes = 0, unsymmetric = 0;
     for (unsigned int j = 0; j < node_list.size(); ++j)
     {
       Node           &node = node_list[j];
@@ -176,7 +215,11 @@ namespace softgrasp
       if (lin.status != ContactStatus::inactive)
       {
         ++active;
-        is_governed[node.dofs[0]] = 1;
+        const Governance how      = constrain(node, rule, coefficients, values);
+        is_governed[node.dofs[0]] = how;
+        if (how == rows_only ||
+            (lin.status == ContactStatus::slip && input.mu > 0))
+          ++unsymmetric;
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
             combination[b][node.dofs[a]] = rule.A(a, b);
@@ -192,11 +235,121 @@ namespace softgrasp
       row_combination[b] = combination[b];
     }
     is_governed.compress(VectorOperation::insert);
-    governed     = is_governed;
-    active_count = Utilities::MPI::sum(active, comm);
-    slip_count   = Utilities::MPI::sum(slipping, comm);
-    change_count = Utilities::MPI::sum(changes, comm);
+    coefficients.compress(VectorOperation::insert);
+    values.compress(VectorOperation::insert);
+    governed                = is_governed;
+    constraint_coefficients = coefficients;
+    constraint_values       = values;
+    unsymmetric_count       = Utilities::MPI::sum(unsymmetric, comm);
+    active_count            = Utilities::MPI::sum(active, comm);
+    slip_count              = Utilities::MPI::sum(slipping, comm);
+    change_count            = Utilities::MPI::sum(changes, comm);
     step_changes += change_count;
+  }
+
+  template <int dim>
+  typename MortarContact<dim>::Governance
+  MortarContact<dim>::constrain(const Node                    &node,
+                                const NodeLaw                 &rule,
+                                TrilinosWrappers::MPI::Vector &coefficients,
+                                TrilinosWrappers::MPI::Vector &values) const
+  {
+    // The node's equations on its free components (symmetry planes and
+    // hanging nodes keep their own constraints); the other rows become
+    // du_a = 0, which the masked law already has (A = I, B = 0, phi = f).
+    Eigen::Matrix3d B   = rule.B;
+    Eigen::Vector3d phi = rule.phi, n = node.normal;
+    bool            any = false;
+    for (unsigned int a = 0; a < 3; ++a)
+      if (a < dim && node.free[a])
+        any = true;
+      else
+      {
+        B.row(a).setZero();
+        B.col(a).setZero();
+        B(a, a) = 1;
+        phi[a]  = 0;
+        n[a]    = 0;
+      }
+    if (!any)
+      return rows_only;
+
+    if (node.status == ContactStatus::stick)
+    {
+      // A = 0: the node's equations B du = -phi do not involve K.
+      const Eigen::Vector3d du = B.fullPivLu().solve(-phi);
+      if (!du.allFinite() ||
+          (B * du + phi).norm() > 1e-8 * phi.norm() + 1e-12 * B.norm())
+        return rows_only;
+      for (unsigned int a = 0; a < dim; ++a)
+        if (node.free[a])
+        {
+          coefficients[node.dofs[a]] = 1;
+          values[node.dofs[a]]       = du[a];
+        }
+      return fixed;
+    }
+
+    // Sliding: n^T A = 0, so n^T (A K du + B du) = -n^T phi is node-local.
+    const bool      friction = parameters.friction_coefficient > 0;
+    Eigen::Vector3d w        = friction ? Eigen::Vector3d(B.transpose() * n)
+                                        : Eigen::Vector3d(rule.c_n * n);
+    unsigned int    k        = 0;
+    for (unsigned int a = 0; a < dim; ++a)
+      if (!node.free[a])
+        w[a] = 0;
+      else if (std::abs(w[a]) > std::abs(w[k]))
+        k = a;
+    // The rows left after condensation are tested with directions
+    // orthogonal to w; with n . w small they would miss the tangents.
+    if (!(std::abs(n.dot(w)) > 1e-3 * w.norm() * n.norm()))
+      return rows_only;
+    for (unsigned int a = 0; a < dim; ++a)
+      coefficients[node.dofs[a]] = w[a];
+    values[node.dofs[k]] = -n.dot(phi);
+    return normal_line;
+  }
+
+  template <int dim>
+  void MortarContact<dim>::add_constraints(
+      AffineConstraints<double> &constraints) const
+  {
+    for (const auto &dofs : relevant_nodes)
+    {
+      const int how = static_cast<int>(governed[dofs[0]]);
+      if (how == fixed)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          if (constraint_coefficients[dofs[c]] != 0)
+          {
+            constraints.add_line(dofs[c]);
+            constraints.set_inhomogeneity(dofs[c], constraint_values[dofs[c]]);
+          }
+      }
+      else if (how == normal_line)
+      {
+        // w . du = beta, solved for the component with the largest |w_k|
+        // (the one that carries beta); the choice is the same on every rank.
+        unsigned int k = 0;
+        for (unsigned int c = 1; c < dim; ++c)
+          if (std::abs(constraint_coefficients[dofs[c]]) >
+              std::abs(constraint_coefficients[dofs[k]]))
+            k = c;
+        const double w_k = constraint_coefficients[dofs[k]];
+        constraints.add_line(dofs[k]);
+        for (unsigned int c = 0; c < dim; ++c)
+          if (c != k && constraint_coefficients[dofs[c]] != 0)
+            constraints.add_entry(
+                dofs[k], dofs[c], -constraint_coefficients[dofs[c]] / w_k);
+        constraints.set_inhomogeneity(dofs[k],
+                                      constraint_values[dofs[k]] / w_k);
+      }
+    }
+  }
+
+  template <int dim> bool MortarContact<dim>::symmetric() const
+  {
+    return unsymmetric_count == 0;
   }
 
   template <int dim>
@@ -254,10 +407,14 @@ namespace softgrasp
   }
 
   template <int dim>
-  void
-  MortarContact<dim>::add_node_terms(TrilinosWrappers::SparseMatrix &tangent,
-                                     TrilinosWrappers::MPI::Vector  &rhs) const
+  void MortarContact<dim>::add_node_terms(
+      const AffineConstraints<double> &constraints,
+      TrilinosWrappers::SparseMatrix  &tangent,
+      TrilinosWrappers::MPI::Vector   &rhs) const
   {
+    FullMatrix<double>                   B(dim, dim);
+    Vector<double>                       b(dim);
+    std::vector<types::global_dof_index> dofs(dim);
     for (unsigned int j = 0; j < node_list.size(); ++j)
     {
       const Node    &node = node_list[j];
@@ -265,15 +422,19 @@ namespace softgrasp
       if (node.status == ContactStatus::inactive)
         continue;
       const Eigen::Vector3d Af = rule.A * node.force;
+      B                        = 0;
+      b                        = 0;
       for (unsigned int a = 0; a < dim; ++a)
       {
+        dofs[a] = node.dofs[a];
         if (!node.free[a])
           continue;
-        for (unsigned int b = 0; b < dim; ++b)
-          if (node.free[b] && rule.B(a, b) != 0)
-            tangent.add(node.dofs[a], node.dofs[b], rule.B(a, b));
-        rhs[node.dofs[a]] += -(rule.phi[a] - Af[a]);
+        for (unsigned int c = 0; c < dim; ++c)
+          if (node.free[c])
+            B(a, c) = rule.B(a, c);
+        b[a] = -(rule.phi[a] - Af[a]);
       }
+      constraints.distribute_local_to_global(B, b, dofs, tangent, rhs);
     }
     tangent.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);

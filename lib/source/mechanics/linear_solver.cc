@@ -19,6 +19,7 @@ namespace softgrasp
 
   LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
       : parameters(parameters)
+      , chosen(parameters.resolve(0))
   {
   }
 
@@ -44,6 +45,16 @@ namespace softgrasp
   void LinearSolver::abandon_factorization()
   {
     (void)direct.release(); // deliberately not freed, see the header
+  }
+
+  void LinearSolver::set_problem_size(const types::global_dof_index n_dofs)
+  {
+    chosen = parameters.resolve(n_dofs);
+  }
+
+  LinearSolverType LinearSolver::type() const
+  {
+    return chosen;
   }
 
   void LinearSolver::set_rigid_body_modes(
@@ -123,11 +134,12 @@ namespace softgrasp
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b,
-                      const bool                            symmetric)
+                      const bool                            symmetric,
+                      const double                          relative_tolerance)
   {
     Result result;
     x = 0;
-    if (parameters.type == LinearSolverType::direct)
+    if (chosen == LinearSolverType::direct)
       return solve_direct(A, x, b);
 
     // ML parameters (as deal.II's PreconditionAMG for elliptic problems),
@@ -155,10 +167,12 @@ namespace softgrasp
     TrilinosWrappers::PreconditionAMG preconditioner;
     preconditioner.initialize(A, ml);
 
-    SolverControl control(parameters.max_iterations,
-                          parameters.relative_tolerance * b.l2_norm(),
-                          false,
-                          false);
+    SolverControl control(
+        parameters.max_iterations,
+        std::max(relative_tolerance, parameters.relative_tolerance) *
+            b.l2_norm(),
+        false,
+        false);
     try
     {
       if (symmetric)

@@ -296,11 +296,12 @@ namespace softgrasp
     const double dofs = cells * std::pow(double(k), dim) * dim;
     const double row  = 12.0 * dim * std::pow(2.0 * k + 1, dim);
     const double factor =
-        !needs_tangent()
-            ? 0.05
-            : (solver_parameters.linear_solver.type == LinearSolverType::direct
-                   ? 5.0
-                   : 2.0);
+        !needs_tangent() ? 0.05
+                         : (solver_parameters.linear_solver.resolve(
+                                static_cast<types::global_dof_index>(dofs)) ==
+                                    LinearSolverType::direct
+                                ? 5.0
+                                : 2.0);
     const double bytes     = dofs * (row * factor + 400);
     const double available = memory_of_machines(comm);
     if (bytes > available)
@@ -366,6 +367,11 @@ namespace softgrasp
           << integrator << "), " << Utilities::MPI::n_mpi_processes(comm)
           << " MPI rank(s) x " << MultithreadInfo::n_threads() << " thread(s)."
           << std::endl;
+    if (needs_tangent())
+      pcout << "Linear solver: "
+            << LinearSolverParameters::name(
+                   solver_parameters.linear_solver.resolve(solid->n_dofs()))
+            << std::endl;
     for (const auto id : material_library.material_ids())
       pcout << "Material " << static_cast<unsigned>(id) << ": "
             << material_library.get(id).summary() << std::endl;

@@ -93,7 +93,8 @@ namespace softgrasp
         state = tangent_state;
         continue; // reported at the top of the loop
       }
-      const auto linear = system.solve(du);
+      const auto linear =
+          system.solve(du, forcing_term(result.residuals, tolerance));
       result.linear_iterations += linear.iterations;
       log << ", " << linear.iterations << " linear its";
       if (!linear.converged)
@@ -152,6 +153,29 @@ namespace softgrasp
       log << std::endl;
       result.iterations = it + 1;
     }
+  }
+
+  template <int dim>
+  double NewtonSolver<dim>::forcing_term(const std::vector<double> &residuals,
+                                         const double tolerance) const
+  {
+    // Eisenstat and Walker (1996), choice 2 (gamma = 0.9, alpha = 2), at
+    // most 1e-4: loose while Newton is far from the solution, tight where
+    // it converges fast; never tighter than reaching a tenth of the Newton
+    // tolerance needs. The linear solver's own tolerance is the floor.
+    if (!parameters.inexact_linear_solves)
+      return 0;
+    const double eta_max = 1e-4;
+    const double r       = residuals.back();
+    double       eta     = eta_max;
+    if (residuals.size() > 1)
+    {
+      const double ratio = r / residuals[residuals.size() - 2];
+      eta                = std::min(eta_max, 0.9 * ratio * ratio);
+    }
+    if (r > 0)
+      eta = std::max(eta, std::min(eta_max, 0.1 * tolerance / r));
+    return eta;
   }
 
   template class NewtonSolver<2>;

@@ -90,8 +90,8 @@ namespace softgrasp
         per_component.push_back(boundary & component_dofs[c]);
       reaction_dofs.push_back(per_component);
     }
-    if (with_tangent &&
-        parameters.linear_solver.type == LinearSolverType::iterative)
+    linear_solver.set_problem_size(dofs.n_dofs());
+    if (with_tangent && linear_solver.type() == LinearSolverType::iterative)
       compute_rigid_body_modes();
 
     Point<dim> lower, upper;
@@ -219,6 +219,7 @@ namespace softgrasp
     {
       tangent = 0;
       rhs     = 0;
+      build_tangent_constraints();
     }
     residual = 0;
     f_int    = 0;
@@ -257,11 +258,11 @@ namespace softgrasp
           FullMatrix<double> matrix(copy.matrix);
           nodal_conditions->transform_cell_rows(
               copy.dof_indices, matrix, cell_rhs);
-          constraints.distribute_local_to_global(
+          tangent_constraints.distribute_local_to_global(
               matrix, cell_rhs, copy.dof_indices, tangent, rhs);
         }
         else
-          constraints.distribute_local_to_global(
+          tangent_constraints.distribute_local_to_global(
               copy.matrix, cell_rhs, copy.dof_indices, tangent, rhs);
       }
     };
@@ -305,7 +306,7 @@ namespace softgrasp
       if (!with_matrix)
         nodal_conditions->evaluate(*this);
       else
-        nodal_conditions->add_node_terms(tangent, rhs);
+        nodal_conditions->add_node_terms(tangent_constraints, tangent, rhs);
       nodal_conditions->apply_to_residual(residual);
     }
     result.residual_norm = residual.l2_norm();
@@ -315,16 +316,31 @@ namespace softgrasp
 
   template <int dim>
   LinearSolver::Result
-  SolidSystem<dim>::solve(TrilinosWrappers::MPI::Vector &du)
+  SolidSystem<dim>::solve(TrilinosWrappers::MPI::Vector &du,
+                          const double                   relative_tolerance)
   {
     TimerOutput::Scope scope(timer, "linear solve");
     du.reinit(owned, communicator());
-    const bool symmetric = !boundary_conditions.has_follower_loads() &&
-                           nodal_conditions == nullptr;
+    const bool symmetric =
+        !boundary_conditions.has_follower_loads() &&
+        (nodal_conditions == nullptr || nodal_conditions->symmetric());
     const LinearSolver::Result result =
-        linear_solver.solve(tangent, du, rhs, symmetric);
-    constraints.distribute(du);
+        linear_solver.solve(tangent, du, rhs, symmetric, relative_tolerance);
+    tangent_constraints.distribute(du);
     return result;
+  }
+
+  template <int dim> void SolidSystem<dim>::build_tangent_constraints()
+  {
+    tangent_constraints.clear();
+    tangent_constraints.reinit(relevant);
+    if (nodal_conditions != nullptr)
+      nodal_conditions->add_constraints(tangent_constraints);
+    // The nodal conditions constrain only dofs that are free here.
+    tangent_constraints.merge(
+        constraints,
+        AffineConstraints<double>::MergeConflictBehavior::no_conflicts_allowed);
+    tangent_constraints.close();
   }
 
   template <int dim> void SolidSystem<dim>::set_inertia(const InertiaTerm &term)

@@ -23,7 +23,8 @@ namespace softgrasp
          {"explicit dynamic", TimeIntegrator::explicit_dynamic}};
     const std::vector<std::pair<std::string, LinearSolverType>> solver_names = {
         {"direct", LinearSolverType::direct},
-        {"iterative", LinearSolverType::iterative}};
+        {"iterative", LinearSolverType::iterative},
+        {"automatic", LinearSolverType::automatic}};
     const std::vector<std::pair<std::string, ExistingResults>>
         existing_results_names = {{"move aside", ExistingResults::move_aside},
                                   {"replace", ExistingResults::replace},
@@ -290,6 +291,16 @@ namespace softgrasp
                       "6",
                       Patterns::Integer(0, 30),
                       "Halvings of one Newton update. Unit: 1.");
+    prm.declare_entry(
+        "Inexact linear solves",
+        "true",
+        Patterns::Bool(),
+        "Iterative linear solver: stop each solve at the Eisenstat-Walker "
+        "forcing term (at most 1e-4 times the right-hand side, tighter as "
+        "Newton converges, never tighter than a tenth of the Newton "
+        "tolerance needs) instead of 'Linear solver/Relative tolerance' "
+        "alone. 'false' solves every step to 'Linear solver/Relative "
+        "tolerance'. No effect on the direct solver.");
     prm.leave_subsection();
   }
 
@@ -302,6 +313,7 @@ namespace softgrasp
     increment_tolerance   = prm.get_double("Increment tolerance");
     line_search           = prm.get_bool("Line search");
     max_line_search_steps = prm.get_integer("Maximum line search steps");
+    inexact_linear_solves = prm.get_bool("Inexact linear solves");
     prm.leave_subsection();
   }
 
@@ -310,14 +322,22 @@ namespace softgrasp
     prm.enter_subsection("Linear solver");
     prm.declare_entry(
         "Type",
-        "iterative",
+        "automatic",
         Patterns::Selection(selection(solver_names)),
-        "'direct': sparse LU (MUMPS through Amesos), robust, for small "
-        "problems. 'iterative': conjugate gradients (GMRES "
-        "when follower pressure makes the tangent "
-        "unsymmetric) preconditioned by Trilinos ML algebraic "
-        "multigrid with the rigid-body modes as near null "
-        "space.");
+        "'direct': sparse LU (MUMPS through Amesos), robust, fastest for "
+        "small problems, memory growing faster than the dofs. 'iterative': "
+        "conjugate gradients (GMRES where follower pressure or sliding "
+        "friction makes the tangent unsymmetric) preconditioned by "
+        "Trilinos ML algebraic multigrid with the rigid-body modes as near "
+        "null space; contact enters as constraints on the contact nodes. "
+        "'automatic': direct up to 'Direct solver limit' displacement dofs, "
+        "iterative above (doc/solver.md gives the measured crossover).");
+    prm.declare_entry("Direct solver limit",
+                      "100000",
+                      Patterns::Integer(0),
+                      "'Type = automatic' uses the direct solver up to this "
+                      "many displacement dofs (summed over all ranks). "
+                      "Unit: 1.");
     prm.declare_entry("Relative tolerance",
                       "1e-8",
                       Patterns::Double(0, 1),
@@ -351,12 +371,35 @@ namespace softgrasp
   {
     prm.enter_subsection("Linear solver");
     type                         = lookup(solver_names, prm.get("Type"));
+    direct_limit                 = prm.get_integer("Direct solver limit");
     relative_tolerance           = prm.get_double("Relative tolerance");
     max_iterations               = prm.get_integer("Maximum iterations");
     aggregation_threshold        = prm.get_double("AMG aggregation threshold");
     reuse_symbolic_factorization = prm.get_bool("Reuse symbolic factorization");
     smoother_sweeps              = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
+  }
+
+  LinearSolverType
+  LinearSolverParameters::resolve(const types::global_dof_index n_dofs) const
+  {
+    if (type != LinearSolverType::automatic)
+      return type;
+    return n_dofs <= direct_limit ? LinearSolverType::direct
+                                  : LinearSolverType::iterative;
+  }
+
+  std::string LinearSolverParameters::name(const LinearSolverType type)
+  {
+    switch (type)
+    {
+    case LinearSolverType::direct:
+      return "direct (MUMPS)";
+    case LinearSolverType::iterative:
+      return "CG/GMRES + ML AMG";
+    default:
+      return "automatic";
+    }
   }
 
   void OutputParameters::declare_parameters(ParameterHandler &prm)

@@ -60,9 +60,13 @@ namespace softgrasp
         const std::vector<dealii::types::global_dof_index> &dof_indices,
         dealii::FullMatrix<double>                         &matrix,
         dealii::Vector<double>                             &rhs) const override;
+    void add_constraints(
+        dealii::AffineConstraints<double> &constraints) const override;
     void
-                add_node_terms(dealii::TrilinosWrappers::SparseMatrix &tangent,
-                               dealii::TrilinosWrappers::MPI::Vector  &rhs) const override;
+         add_node_terms(const dealii::AffineConstraints<double> &constraints,
+                        dealii::TrilinosWrappers::SparseMatrix  &tangent,
+                        dealii::TrilinosWrappers::MPI::Vector   &rhs) const override;
+    bool symmetric() const override;
     std::string iteration_report() const override;
 
     /**
@@ -106,8 +110,35 @@ namespace softgrasp
       Eigen::Matrix3d B   = Eigen::Matrix3d::Zero();
     };
 
+    /// How a closed node's equations enter the linear solve (the value of
+    /// `governed` at its first dof).
+    enum Governance : int
+    {
+      free_rows   = 0, ///< its own equilibrium rows (open node)
+      rows_only   = 1, ///< rows combined by A, no constraint (degenerate)
+      normal_line = 2, ///< one constraint w . du = beta, rows by A
+      fixed       = 3  ///< every free component prescribed (A = 0)
+    };
+
     Eigen::Matrix3d normal_gradient(const Proximity       &p,
                                     const Eigen::Vector3d &x) const;
+
+    /// Collect relevant_nodes.
+    void find_relevant_nodes(const SolidSystem<dim> &system);
+
+    /**
+     * The constraint data of a closed node from its law (free components
+     * only): for a sticking node the prescribed increment du = -B^-1 phi;
+     * for a sliding one the normal equation (B^T n) . du = -n . phi, with
+     * w = c_n n in place of B^T n when it slides without friction (then
+     * the condensed rows are tested with tangents, orthogonal to n, and
+     * stay symmetric; the two differ by H f_t / c_n, which vanishes at
+     * convergence). Writes coefficients and values at the node's dofs.
+     */
+    Governance constrain(const Node                            &node,
+                         const NodeLaw                         &rule,
+                         dealii::TrilinosWrappers::MPI::Vector &coefficients,
+                         dealii::TrilinosWrappers::MPI::Vector &values) const;
 
     const double                   shear_modulus;
     dealii::TimerOutput           &timer;
@@ -116,9 +147,17 @@ namespace softgrasp
     std::vector<std::vector<Pose>> poses_converged;
     std::vector<NodeLaw>           law; ///< per node of node_list
     std::array<dealii::TrilinosWrappers::MPI::Vector, dim> row_combination;
-    dealii::TrilinosWrappers::MPI::Vector                  governed;
-    dealii::TrilinosWrappers::MPI::Vector                  owned_scratch;
-    unsigned int change_count = 0, step_changes = 0;
+    /// Governance of each closed node at its first dof (ghosted), and its
+    /// constraint coefficients and values at its dofs (see constrain()).
+    dealii::TrilinosWrappers::MPI::Vector governed;
+    dealii::TrilinosWrappers::MPI::Vector constraint_coefficients;
+    dealii::TrilinosWrappers::MPI::Vector constraint_values;
+    /// Dofs of every slave node on a locally owned cell (owned or ghost).
+    std::vector<std::array<dealii::types::global_dof_index, dim>>
+                 relevant_nodes;
+    unsigned int unsymmetric_count = 0; ///< nodes sliding with friction etc.
+    dealii::TrilinosWrappers::MPI::Vector owned_scratch;
+    unsigned int                          change_count = 0, step_changes = 0;
   };
 } // namespace softgrasp
 

@@ -35,6 +35,11 @@ namespace softgrasp
     explicit LinearSolver(const LinearSolverParameters &parameters);
     ~LinearSolver();
 
+    /// Resolve 'automatic' for a system of @p n_dofs unknowns (global).
+    void set_problem_size(const dealii::types::global_dof_index n_dofs);
+    /// The solver in use: direct or iterative.
+    LinearSolverType type() const;
+
     /**
      * Set the near null space: each vector a rigid-body mode, with the
      * parallel layout of the matrix. Without it, ML uses the constant
@@ -52,11 +57,14 @@ namespace softgrasp
     /// while an error unwinds; the memory goes with the process.
     void abandon_factorization();
 
-    /// Solve A x = b; @p symmetric selects CG over GMRES.
+    /// Solve A x = b; @p symmetric selects CG over GMRES. An iterative
+    /// solve stops at max(@p relative_tolerance, 'Relative tolerance')
+    /// times |b|.
     Result solve(const dealii::TrilinosWrappers::SparseMatrix &A,
                  dealii::TrilinosWrappers::MPI::Vector        &x,
                  const dealii::TrilinosWrappers::MPI::Vector  &b,
-                 const bool                                    symmetric);
+                 const bool                                    symmetric,
+                 const double relative_tolerance = 0);
 
   private:
     /// MUMPS through Amesos, keeping its symbolic factorisation.
@@ -66,6 +74,7 @@ namespace softgrasp
 
     struct DirectState; ///< the Amesos problem and solver
     LinearSolverParameters                             parameters;
+    LinearSolverType                                   chosen;
     std::unique_ptr<DirectState>                       direct;
     std::vector<dealii::TrilinosWrappers::MPI::Vector> modes;
     std::unique_ptr<Epetra_MultiVector>                null_space;

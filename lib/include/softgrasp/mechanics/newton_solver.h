@@ -42,6 +42,10 @@ namespace softgrasp
   private:
     /// The iterations of solve().
     Result iterate(SolidSystem<dim> &system) const;
+    /// Relative tolerance of the next iterative linear solve (inexact
+    /// Newton) from the residual norms so far and the Newton tolerance (N).
+    double forcing_term(const std::vector<double> &residuals,
+                        const double               tolerance) const;
 
     const NewtonParameters      parameters;
     dealii::ConditionalOStream &log;

@@ -2,6 +2,7 @@
 #define softgrasp_mechanics_nodal_conditions_h
 
 #include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -19,9 +20,20 @@ namespace softgrasp
    *   A_j (K du)_j + B_j du_j = -Phi_j,
    * i.e. a combination A_j of the node's rows of the tangent K plus a
    * node-local matrix B_j. Mortar contact with condensed multipliers is of
-   * this kind. SolidSystem calls evaluate() after each residual assembly,
-   * transforms every cell's rows while assembling the tangent, and then
-   * adds the node-local terms.
+   * this kind. SolidSystem calls evaluate() after each residual assembly;
+   * before assembling the tangent it asks for the node constraints of the
+   * current state (add_constraints()), which it merges with the
+   * hanging-node and Dirichlet constraints, then transforms every cell's
+   * rows and adds the node-local terms, both condensed through those
+   * constraints.
+   *
+   * The constraints carry the node equations that do not couple to K: where
+   * A_j = 0 (e.g. a sticking contact node) all of du_j is prescribed, and
+   * where A_j has a left null vector z (z^T A_j = 0, e.g. the normal of a
+   * sliding contact node) the equation z^T B_j du_j = -z^T Phi_j becomes one
+   * linear constraint on du_j. What remains of the node's rows is tested
+   * only with directions in the constraint's null space, so the condensed
+   * system is symmetric wherever the remaining rows are (symmetric()).
    */
   template <int dim> class NodalConditions
   {
@@ -44,11 +56,23 @@ namespace softgrasp
         dealii::FullMatrix<double>                         &matrix,
         dealii::Vector<double>                             &rhs) const = 0;
 
-    /// Add B_j to the tangent and -(Phi_j - A_j f_j) to the right-hand side
-    /// at locally owned nodes. Collective (compresses both).
+    /// Add the node constraints of the current state (after evaluate()) to
+    /// @p constraints (not closed; its index set is the locally relevant
+    /// dofs): identical lines on every rank that sees a node.
     virtual void
-    add_node_terms(dealii::TrilinosWrappers::SparseMatrix &tangent,
-                   dealii::TrilinosWrappers::MPI::Vector  &rhs) const = 0;
+    add_constraints(dealii::AffineConstraints<double> &constraints) const = 0;
+
+    /// Add B_j to the tangent and -(Phi_j - A_j f_j) to the right-hand side
+    /// at locally owned nodes, condensed through @p constraints (those the
+    /// cells' contributions went through). Collective (compresses both).
+    virtual void
+    add_node_terms(const dealii::AffineConstraints<double> &constraints,
+                   dealii::TrilinosWrappers::SparseMatrix  &tangent,
+                   dealii::TrilinosWrappers::MPI::Vector   &rhs) const = 0;
+
+    /// Whether the condensed tangent is symmetric where the tangent of the
+    /// solid is (no sliding node with friction at the current state).
+    virtual bool symmetric() const = 0;
 
     /// One line for the Newton log (e.g. active-set sizes and changes).
     virtual std::string iteration_report() const = 0;

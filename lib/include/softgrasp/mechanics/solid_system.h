@@ -85,7 +85,10 @@ namespace softgrasp
     void release_factorization();
 
     /// Solve K du = -r with the last assembled system; du obeys constraints.
-    LinearSolver::Result solve(dealii::TrilinosWrappers::MPI::Vector &du);
+    /// An iterative solver stops at @p relative_tolerance times |rhs|
+    /// (at least 'Linear solver/Relative tolerance').
+    LinearSolver::Result solve(dealii::TrilinosWrappers::MPI::Vector &du,
+                               const double relative_tolerance = 0);
 
     /// du . (f_ext - f_int) on free dofs, from the last assembly (N m).
     double residual_dot(const dealii::TrilinosWrappers::MPI::Vector &du) const;
@@ -141,6 +144,8 @@ namespace softgrasp
 
   private:
     void compute_rigid_body_modes();
+    /// tangent_constraints = constraints + the nodal conditions' ones.
+    void build_tangent_constraints();
 
     dealii::parallel::distributed::Triangulation<dim> &triangulation;
     const MaterialLibrary                             &materials;
@@ -155,9 +160,12 @@ namespace softgrasp
     CellAssembler<dim>                                 assembler;
     LinearSolver                                       linear_solver;
 
-    dealii::IndexSet                           owned, relevant;
-    dealii::AffineConstraints<double>          constraints;
-    dealii::AffineConstraints<double>          homogeneous_constraints;
+    dealii::IndexSet                  owned, relevant;
+    dealii::AffineConstraints<double> constraints;
+    dealii::AffineConstraints<double> homogeneous_constraints;
+    /// constraints plus the nodal conditions' constraints of the tangent
+    /// last assembled (what the last linear solve obeys)
+    dealii::AffineConstraints<double>          tangent_constraints;
     dealii::TrilinosWrappers::SparseMatrix     tangent;
     dealii::TrilinosWrappers::MPI::Vector      u, u_ghosted;
     dealii::TrilinosWrappers::MPI::Vector      rhs, residual, f_int, f_ext;

@@ -2,6 +2,7 @@
 #define softgrasp_mechanics_solver_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
 #include <softgrasp/base/run_directory.h>
 #include <string>
 #include <vector>
@@ -31,8 +32,9 @@ namespace softgrasp
   /// Linear solver of each Newton step.
   enum class LinearSolverType
   {
-    direct,   ///< sparse direct (Amesos MUMPS); for small problems
-    iterative ///< CG (GMRES with follower loads) + Trilinos ML AMG
+    direct,    ///< sparse direct (Amesos MUMPS); for small problems
+    iterative, ///< CG (GMRES where unsymmetric) + Trilinos ML AMG
+    automatic  ///< direct up to a number of dofs, iterative above
   };
 
   /// Time integration of the solid ("Time/Integrator").
@@ -113,6 +115,8 @@ namespace softgrasp
     double       increment_tolerance   = 1e-12;
     bool         line_search           = true;
     unsigned int max_line_search_steps = 6; ///< step halvings
+    /// iterative linear solves only as tight as Newton's progress needs
+    bool inexact_linear_solves = true;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
@@ -121,17 +125,26 @@ namespace softgrasp
   /// Linear solver ("Linear solver" subsection).
   struct LinearSolverParameters
   {
-    LinearSolverType type                  = LinearSolverType::iterative;
-    double           relative_tolerance    = 1e-8; ///< of |rhs|; 1
-    unsigned int     max_iterations        = 2000;
-    double           aggregation_threshold = 1e-4; ///< ML AMG; 1
-    unsigned int     smoother_sweeps       = 2;    ///< ML AMG Chebyshev degree
+    LinearSolverType type = LinearSolverType::automatic;
+    /// automatic: the direct solver up to this many displacement dofs
+    dealii::types::global_dof_index direct_limit       = 100000;
+    double                          relative_tolerance = 1e-8; ///< of |rhs|; 1
+    unsigned int                    max_iterations     = 2000;
+    double                          aggregation_threshold = 1e-4; ///< ML AMG; 1
+    unsigned int smoother_sweeps = 2; ///< ML AMG Chebyshev degree
     /// direct: keep MUMPS' ordering and symbolic factorisation over the
     /// Newton iterations of a load step (only the numeric one is redone)
     bool reuse_symbolic_factorization = true;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
+
+    /// The solver used for a system of @p n_dofs unknowns (direct or
+    /// iterative; automatic resolved by direct_limit).
+    LinearSolverType
+    resolve(const dealii::types::global_dof_index n_dofs) const;
+    /// Its name for the run summary, e.g. "CG/GMRES + ML AMG".
+    static std::string name(const LinearSolverType type);
   };
 
   /// Files and terminal output ("Output" subsection).
