@@ -4,6 +4,7 @@
 //
 //   hertz_contact <n> <ratio> <size (m)> [degree] [steps] [direct|iterative]
 //                 [global refinements] [nu] [depth (m)]
+//                 [inexact linear solves: true|false]
 //   mpirun -np 2 hertz_contact 8 1.5 0.05 2 4 iterative 1
 //
 // Prints the force and the contact radius against Hertz's values, Newton
@@ -32,6 +33,7 @@ main(int argc, char **argv)
   const unsigned int refinements = argc > 7 ? std::stoi(argv[7]) : 0;
   const double       nu          = argc > 8 ? std::stod(argv[8]) : 0.45;
   const double       depth       = argc > 9 ? std::stod(argv[9]) : 1e-4;
+  const std::string  inexact     = argc > 10 ? argv[10] : "true";
 
   ParameterHandler prm;
   softgrasp::MechanicsSolver<3>::declare_parameters(prm);
@@ -47,7 +49,9 @@ main(int argc, char **argv)
                                                 solver_type,
                                                 refinements,
                                                 nu,
-                                                depth),
+                                                depth) +
+                         "subsection Newton\n set Inexact linear solves = " +
+                         inexact + "\nend\n",
                      "benchmark");
   softgrasp::QuasiStaticSolver<3> solver(
       comm, softgrasp::SolverInputs<3>::parse(prm));

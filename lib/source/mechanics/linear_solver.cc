@@ -182,9 +182,12 @@ namespace softgrasp
       }
       else
       {
+        // Right preconditioning: the stopping test then sees the true
+        // residual (N), as CG's does, not the preconditioned one (m).
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
             control,
-            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100));
+            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100,
+                                                                       true));
         gmres.solve(A, x, b, preconditioner);
       }
       result.converged = true;

@@ -333,7 +333,7 @@ namespace softgrasp
         "'automatic': direct up to 'Direct solver limit' displacement dofs, "
         "iterative above (doc/solver.md gives the measured crossover).");
     prm.declare_entry("Direct solver limit",
-                      "100000",
+                      "50000",
                       Patterns::Integer(0),
                       "'Type = automatic' uses the direct solver up to this "
                       "many displacement dofs (summed over all ranks). "

@@ -127,7 +127,7 @@ namespace softgrasp
   {
     LinearSolverType type = LinearSolverType::automatic;
     /// automatic: the direct solver up to this many displacement dofs
-    dealii::types::global_dof_index direct_limit       = 100000;
+    dealii::types::global_dof_index direct_limit       = 50000;
     double                          relative_tolerance = 1e-8; ///< of |rhs|; 1
     unsigned int                    max_iterations     = 2000;
     double                          aggregation_threshold = 1e-4; ///< ML AMG; 1
