@@ -5,6 +5,7 @@
 //   hertz_contact <n> <ratio> <size (m)> [degree] [steps] [direct|iterative]
 //                 [global refinements] [nu] [depth (m)]
 //                 [inexact linear solves: true|false]
+//                 [block preconditioner: true|false]
 //   mpirun -np 2 hertz_contact 8 1.5 0.05 2 4 iterative 1
 //
 // Prints the force and the contact radius against Hertz's values, Newton
@@ -34,25 +35,29 @@ main(int argc, char **argv)
   const double       nu          = argc > 8 ? std::stod(argv[8]) : 0.45;
   const double       depth       = argc > 9 ? std::stod(argv[9]) : 1e-4;
   const std::string  inexact     = argc > 10 ? argv[10] : "true";
+  const std::string  block       = argc > 11 ? argv[11] : "true";
 
   ParameterHandler prm;
   softgrasp::MechanicsSolver<3>::declare_parameters(prm);
   softgrasp::ParameterReader reader;
   softgrasp::MechanicsSolver<3>::add_passes(reader);
-  reader.read_string(prm,
-                     softgrasp_tests::hertz_prm(n,
-                                                ratio,
-                                                size,
-                                                degree,
-                                                steps,
-                                                "hertz-benchmark",
-                                                solver_type,
-                                                refinements,
-                                                nu,
-                                                depth) +
-                         "subsection Newton\n set Inexact linear solves = " +
-                         inexact + "\nend\n",
-                     "benchmark");
+  reader.read_string(
+      prm,
+      softgrasp_tests::hertz_prm(n,
+                                 ratio,
+                                 size,
+                                 degree,
+                                 steps,
+                                 "hertz-benchmark",
+                                 solver_type,
+                                 refinements,
+                                 nu,
+                                 depth) +
+          "subsection Newton\n set Inexact linear solves = " + inexact +
+          "\nend\nsubsection Linear solver\n set Block "
+          "preconditioner = " +
+          block + "\nend\n",
+      "benchmark");
   softgrasp::QuasiStaticSolver<3> solver(
       comm, softgrasp::SolverInputs<3>::parse(prm));
   solver.run();

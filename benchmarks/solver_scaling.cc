@@ -2,12 +2,16 @@
 // neo-Hookean block (mu = 10 kPa, nu = 0.49) compressed by 20 % between
 // bonded platens in 10 load steps, mixed u-p-J formulation, AMG-CG.
 //
-//   solver_scaling <cells per edge> [degree] [nu]
+//   solver_scaling <cells per edge> [degree] [nu] [block: true|false]
 //   mpirun -np 2 solver_scaling 31
 //
 // Prints one line: DoFs, ranks, wall time per phase (TimerOutput), Newton
 // and linear iterations per step, and peak resident memory (sum over ranks).
 // Q1 DoFs = 3 (n+1)^3: n = 14 -> 10k, 31 -> 98k, 46 -> 311k.
+// Q2 DoFs = 3 (2n+1)^3: n = 7 -> 10k, 16 -> 108k, 23 -> 311k.
+// 'block' selects 'Linear solver/Block preconditioner' (default true).
+#include "../tests/solver_factory.h"
+
 #include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <iostream>
@@ -27,32 +31,15 @@ main(int argc, char **argv)
   const unsigned                   degree = argc > 2 ? std::stoi(argv[2]) : 1;
   const double                     nu = argc > 3 ? std::stod(argv[3]) : 0.49;
 
-  std::ostringstream prm;
-  prm << "subsection Mesh\n set Type = block\n subsection Block\n"
-      << "  set Upper corner = 0.02, 0.02, 0.02\n  set Subdivisions = " << n
-      << ", " << n << ", " << n << "\n end\nend\n"
-      << "subsection Finite element\n set Polynomial degree = " << degree
-      << "\n set Formulation = mixed u-p-J\nend\n"
-      << "subsection Materials\n set Material ids = 0\n subsection Material 0\n"
-      << "  set Model = neo-Hookean\n  set Density = 1000\n"
-      << "  subsection neo-Hookean\n   set Shear modulus = 1e4\n  end\n"
-      << "  subsection Volumetric\n   set Poisson's ratio = " << nu
-      << "\n  end\n end\nend\n"
-      << "subsection Boundary conditions\n set Dirichlet boundary ids = 4, 5\n"
-      << " subsection Dirichlet boundary 5\n"
-      << "  set Displacement = 0; 0; -0.004 * t\n end\nend\n"
-      << "subsection Time\n set Time step = 0.1\nend\n"
-      << "subsection Newton\n set Relative tolerance = 1e-8\nend\n"
-      << "subsection Linear solver\n set Type = iterative\n"
-      << " set Relative tolerance = 1e-6\nend\n"
-      << "subsection Output\n set Directory = solver_scaling_output\n"
-      << " set VTU interval = 0\n set Verbose = false\nend\n";
+  const bool        block = argc > 4 ? std::string(argv[4]) != "false" : true;
+  const std::string prm   = softgrasp_tests::compressed_block_prm(
+      n, degree, nu, "iterative", block, "solver_scaling_output");
 
   ParameterHandler prm_handler;
   softgrasp::MechanicsSolver<3>::declare_parameters(prm_handler);
   softgrasp::ParameterReader reader;
   softgrasp::MechanicsSolver<3>::add_passes(reader);
-  reader.read_string(prm_handler, prm.str(), "solver_scaling");
+  reader.read_string(prm_handler, prm, "solver_scaling");
   softgrasp::QuasiStaticSolver<3> solver(
       comm, softgrasp::SolverInputs<3>::parse(prm_handler));
   solver.run();

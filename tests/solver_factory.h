@@ -75,6 +75,47 @@ namespace softgrasp_tests
       << "\nend\n";
     return s.str();
   }
+  /**
+   * A neo-Hookean cube (20 mm, mu = 10 kPa, Poisson's ratio @p nu) compressed
+   * by 20 % between bonded platens (boundary ids 4 and 5) in 10 load steps,
+   * mixed u-p-J formulation, @p n cells per edge of degree @p degree; the
+   * iterative solver with or without the block preconditioner
+   * (@p linear_solver: direct, iterative). The classic test of a solver for
+   * nearly incompressible solids.
+   */
+  inline std::string compressed_block_prm(const unsigned int n,
+                                          const unsigned int degree,
+                                          const double       nu,
+                                          const std::string &linear_solver,
+                                          const bool         block,
+                                          const std::string &directory)
+  {
+    std::ostringstream prm;
+    prm << "subsection Mesh\n set Type = block\n subsection Block\n"
+        << "  set Upper corner = 0.02, 0.02, 0.02\n  set Subdivisions = " << n
+        << ", " << n << ", " << n << "\n end\nend\n"
+        << "subsection Finite element\n set Polynomial degree = " << degree
+        << "\n set Formulation = mixed u-p-J\nend\n"
+        << "subsection Materials\n set Material ids = 0\n"
+        << " subsection Material 0\n"
+        << "  set Model = neo-Hookean\n  set Density = 1000\n"
+        << "  subsection neo-Hookean\n   set Shear modulus = 1e4\n  end\n"
+        << "  subsection Volumetric\n   set Poisson's ratio = " << nu
+        << "\n  end\n end\nend\n"
+        << "subsection Boundary conditions\n"
+        << " set Dirichlet boundary ids = 4, 5\n"
+        << " subsection Dirichlet boundary 5\n"
+        << "  set Displacement = 0; 0; -0.004 * t\n end\nend\n"
+        << "subsection Time\n set Time step = 0.1\nend\n"
+        << "subsection Newton\n set Relative tolerance = 1e-8\nend\n"
+        << "subsection Linear solver\n set Type = " << linear_solver
+        << "\n set Relative tolerance = 1e-6\n"
+        << " set Block preconditioner = " << (block ? "true" : "false")
+        << "\nend\n"
+        << "subsection Output\n set Directory = " << directory
+        << "\n set VTU interval = 0\n set Verbose = false\nend\n";
+    return prm.str();
+  }
 } // namespace softgrasp_tests
 
 #endif

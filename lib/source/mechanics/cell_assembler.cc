@@ -104,6 +104,7 @@ namespace softgrasp
       const TrilinosWrappers::MPI::Vector                  &u,
       const bool                                            with_matrix,
       const InertiaTerm                                    &inertia,
+      const bool                                            split_volumetric,
       AssemblyScratchData<dim>                             &scratch,
       AssemblyCopyData                                     &copy) const
   {
@@ -120,7 +121,8 @@ namespace softgrasp
     try
     {
       const Material &material = materials.get(cell->material_id());
-      assemble_volume(u, material, with_matrix, scratch, copy);
+      assemble_volume(
+          u, material, with_matrix, split_volumetric, scratch, copy);
       if (inertia.active())
         add_inertia(u, material, with_matrix, inertia, scratch, copy);
       assemble_boundary(cell, u, with_matrix, scratch, copy);
@@ -144,8 +146,9 @@ namespace softgrasp
   template <int dim>
   void
   CellAssembler<dim>::assemble_volume(const TrilinosWrappers::MPI::Vector &u,
-                                      const Material           &material,
-                                      const bool                with_matrix,
+                                      const Material &material,
+                                      const bool      with_matrix,
+                                      const bool      split_volumetric,
                                       AssemblyScratchData<dim> &scratch,
                                       AssemblyCopyData         &copy) const
   {
@@ -233,33 +236,56 @@ namespace softgrasp
     }
 
     if (with_matrix && mixed)
-    {
-      // K_con = G^T A G, G_ak = int N_a J div_x N_k dV
-      const ElementDilatation<dim> &d  = scratch.dilatation;
-      const unsigned int            nb = d.n_basis();
-      FullMatrix<double>            G(nb, n);
-      for (unsigned int q = 0; q < n_q; ++q)
-        for (unsigned int k = 0; k < n; ++k)
-        {
-          const double div = trace(scratch.grad_Nx[q][k]);
-          for (unsigned int a = 0; a < nb; ++a)
-            G(a, k) += d.basis(a, q) * scratch.J[q] * div * scratch.JxW[q];
-        }
-      FullMatrix<double> AG(nb, n);
-      d.condensed_kernel().mmult(AG, G);
-      for (unsigned int k = 0; k < n; ++k)
-        for (unsigned int l = 0; l <= k; ++l)
-        {
-          double value = 0;
-          for (unsigned int a = 0; a < nb; ++a)
-            value += G(a, k) * AG(a, l);
-          copy.matrix(k, l) += value;
-        }
-    }
+      add_volumetric_coupling(material, split_volumetric, scratch, copy);
     if (with_matrix)
       for (unsigned int k = 0; k < n; ++k)
         for (unsigned int l = k + 1; l < n; ++l)
           copy.matrix(k, l) = copy.matrix(l, k);
+  }
+
+  template <int dim>
+  void
+  CellAssembler<dim>::add_volumetric_coupling(const Material &material,
+                                              const bool      split,
+                                              AssemblyScratchData<dim> &scratch,
+                                              AssemblyCopyData &copy) const
+  {
+    // K_con = G^T D G, G_ak = int N_a J div_x N_k dV, D the kernel
+    const ElementDilatation<dim> &d   = scratch.dilatation;
+    const unsigned int            nb  = d.n_basis();
+    const unsigned int            n   = copy.matrix.m();
+    const unsigned int            n_q = scratch.J.size();
+    FullMatrix<double>           &G   = copy.G;
+    G.reinit(nb, n);
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int k = 0; k < n; ++k)
+      {
+        const double div = trace(scratch.grad_Nx[q][k]);
+        for (unsigned int a = 0; a < nb; ++a)
+          G(a, k) += d.basis(a, q) * scratch.J[q] * div * scratch.JxW[q];
+      }
+    FullMatrix<double> DG(nb, n);
+    d.condensed_kernel().mmult(DG, G);
+    FullMatrix<double> &target = split ? copy.volumetric : copy.matrix;
+    if (split)
+    {
+      copy.volumetric.reinit(n, n);
+      copy.D      = d.condensed_kernel();
+      copy.volume = 0;
+      for (const double w : scratch.JxW)
+        copy.volume += w;
+      d.schur_inverse(1.0 / material.initial_shear_modulus(), copy.S_inverse);
+    }
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int l = 0; l <= k; ++l)
+      {
+        double value = 0;
+        for (unsigned int a = 0; a < nb; ++a)
+          value += G(a, k) * DG(a, l);
+        target(k, l) += value;
+        if (split && l < k)
+          target(l, k) += value;
+      }
   }
 
   template <int dim>

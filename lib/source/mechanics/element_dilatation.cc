@@ -86,18 +86,38 @@ namespace softgrasp
 
     if (!with_stiffness)
       return;
-    // A = M^-1 K_JJ M^-1, K_JJ = int N U''(J~) N^T dV (in mass)
-    M = 0;
+    // A = M^-1 K_JJ M^-1, K_JJ = int N U''(J~) N^T dV
+    FullMatrix<double> &K_JJ = scratch;
+    K_JJ.reinit(n_functions, n_functions);
     for (unsigned int q = 0; q < n_points; ++q)
     {
       const double d2U = energy.second_derivative(J_tilde[q]);
       for (unsigned int a = 0; a < n_functions; ++a)
         for (unsigned int e = 0; e < n_functions; ++e)
-          M(a, e) += basis(a, q) * d2U * basis(e, q) * JxW[q];
+          K_JJ(a, e) += basis(a, q) * d2U * basis(e, q) * JxW[q];
     }
     FullMatrix<double> tmp(n_functions, n_functions);
-    M_inverse.mmult(tmp, M);
+    M_inverse.mmult(tmp, K_JJ);
     tmp.mmult(kernel, M_inverse);
+  }
+
+  template <int dim>
+  void ElementDilatation<dim>::schur_inverse(const double        compliance,
+                                             FullMatrix<double> &result) const
+  {
+    // (A^-1 + c M)^-1 = A (I + c M A)^-1, which needs no inverse of A
+    // (A may be singular where U'' vanishes).
+    FullMatrix<double> T(n_functions, n_functions), T_inverse(T);
+    mass.mmult(T, kernel);
+    T *= compliance;
+    for (unsigned int a = 0; a < n_functions; ++a)
+      T(a, a) += 1;
+    T_inverse.invert(T);
+    result.reinit(n_functions, n_functions);
+    kernel.mmult(result, T_inverse);
+    for (unsigned int a = 0; a < n_functions; ++a)
+      for (unsigned int e = a + 1; e < n_functions; ++e)
+        result(a, e) = result(e, a) = 0.5 * (result(a, e) + result(e, a));
   }
 
   template <int dim> unsigned int ElementDilatation<dim>::n_basis() const

@@ -9,6 +9,7 @@
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
+#include <limits>
 #include <ml_MultiLevelPreconditioner.h>
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/mechanics/linear_solver.h>
@@ -66,10 +67,48 @@ namespace softgrasp
 
   namespace
   {
+    /**
+     * SolverControl that also fails when the best residual so far has not
+     * fallen by 10 % over the last 200 iterations: a Krylov solve on an
+     * indefinite tangent (e.g. at a poor Newton iterate) can stagnate for
+     * thousands of iterations, and the load step is better cut back at
+     * once.
+     */
+    class StagnationControl : public SolverControl
+    {
+    public:
+      StagnationControl(const unsigned int max_steps, const double tolerance)
+          : SolverControl(max_steps, tolerance, false, false)
+      {
+      }
+      State check(const unsigned int step, const double value) override
+      {
+        const State state = SolverControl::check(step, value);
+        if (state != iterate)
+          return state;
+        if (value < 0.9 * best)
+        {
+          best      = value;
+          best_step = step;
+        }
+        if (step > best_step + window)
+        {
+          lcheck = failure;
+          return failure;
+        }
+        return iterate;
+      }
+
+    private:
+      static constexpr unsigned int window = 200;
+      double                        best   = std::numeric_limits<double>::max();
+      unsigned int                  best_step = 0;
+    };
+
     /// A solution with NaN or Inf entries is a breakdown, not a solution.
-    LinearSolver::Result
-    finite_or_breakdown(const TrilinosWrappers::MPI::Vector &x,
-                        LinearSolver::Result                 result)
+    template <typename VectorType>
+    LinearSolver::Result finite_or_breakdown(const VectorType    &x,
+                                             LinearSolver::Result result)
     {
       if (result.converged && !std::isfinite(x.l2_norm()))
       {
@@ -130,18 +169,10 @@ namespace softgrasp
     return finite_or_breakdown(x, result);
   }
 
-  LinearSolver::Result
-  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
-                      TrilinosWrappers::MPI::Vector        &x,
-                      const TrilinosWrappers::MPI::Vector  &b,
-                      const bool                            symmetric,
-                      const double                          relative_tolerance)
+  void LinearSolver::initialize_amg(
+      const TrilinosWrappers::SparseMatrix &A,
+      TrilinosWrappers::PreconditionAMG    &preconditioner)
   {
-    Result result;
-    x = 0;
-    if (chosen == LinearSolverType::direct)
-      return solve_direct(A, x, b);
-
     // ML parameters (as deal.II's PreconditionAMG for elliptic problems),
     // with the rigid-body modes as pre-computed near null space.
     Teuchos::ParameterList ml;
@@ -164,31 +195,35 @@ namespace softgrasp
       ml.set("null space: dimension", null_space->NumVectors());
       ml.set("null space: vectors", null_space->Values());
     }
-    TrilinosWrappers::PreconditionAMG preconditioner;
     preconditioner.initialize(A, ml);
+  }
 
-    SolverControl control(
-        parameters.max_iterations,
-        std::max(relative_tolerance, parameters.relative_tolerance) *
-            b.l2_norm(),
-        false,
-        false);
+  template <typename Operator, typename Preconditioner, typename VectorType>
+  LinearSolver::Result
+  LinearSolver::iterate(const Operator       &op,
+                        const Preconditioner &preconditioner,
+                        VectorType           &x,
+                        const VectorType     &b,
+                        const bool            symmetric,
+                        const double          tolerance) const
+  {
+    Result            result;
+    StagnationControl control(parameters.max_iterations, tolerance);
     try
     {
       if (symmetric)
       {
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        cg.solve(A, x, b, preconditioner);
+        SolverCG<VectorType> cg(control);
+        cg.solve(op, x, b, preconditioner);
       }
       else
       {
         // Right preconditioning: the stopping test then sees the true
         // residual (N), as CG's does, not the preconditioned one (m).
-        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+        SolverGMRES<VectorType> gmres(
             control,
-            SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100,
-                                                                       true));
-        gmres.solve(A, x, b, preconditioner);
+            typename SolverGMRES<VectorType>::AdditionalData(100, true));
+        gmres.solve(op, x, b, preconditioner);
       }
       result.converged = true;
     }
@@ -204,6 +239,151 @@ namespace softgrasp
     }
     result.iterations = control.last_step();
     result.residual   = control.last_value();
+    return finite_or_breakdown(x, result);
+  }
+
+  LinearSolver::Result
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &b,
+                      const bool                            symmetric,
+                      const double                          relative_tolerance)
+  {
+    x = 0;
+    if (chosen == LinearSolverType::direct)
+      return solve_direct(A, x, b);
+    TrilinosWrappers::PreconditionAMG preconditioner;
+    initialize_amg(A, preconditioner);
+    const double tolerance =
+        std::max(relative_tolerance, parameters.relative_tolerance) *
+        b.l2_norm();
+    return iterate(A, preconditioner, x, b, symmetric, tolerance);
+  }
+
+  namespace
+  {
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+    using Block       = VolumetricOperator::PressureBlock;
+
+    /// The saddle point operator [A G^T; Sigma G  -Sigma C]
+    /// (VolumetricOperator).
+    class SaddlePointOperator
+    {
+    public:
+      SaddlePointOperator(const TrilinosWrappers::SparseMatrix &A,
+                          const VolumetricOperator             &V)
+          : A(A)
+          , V(V)
+      {
+      }
+      void vmult(BlockVector &dst, const BlockVector &src) const
+      {
+        scratch.reinit(src, true);
+        A.vmult(dst.block(0), src.block(0));
+        V.gradient(scratch.block(0), src.block(1));
+        dst.block(0) += scratch.block(0);
+        V.divergence(scratch.block(1), src.block(0));
+        V.multiply(dst.block(1), scratch.block(1), Block::scaled_stiffness);
+        V.multiply(scratch.block(1), src.block(1), Block::scaled_compliance);
+        dst.block(1) -= scratch.block(1);
+      }
+
+    private:
+      const TrilinosWrappers::SparseMatrix &A;
+      const VolumetricOperator             &V;
+      mutable BlockVector                   scratch;
+    };
+
+    /// The block triangular preconditioner [A G^T; 0 -Sigma S]^-1 with one
+    /// AMG cycle for A^-1 and the element-wise S^-1.
+    class BlockTriangularPreconditioner
+    {
+    public:
+      BlockTriangularPreconditioner(
+          const TrilinosWrappers::PreconditionAMG &amg,
+          const VolumetricOperator                &V)
+          : amg(amg)
+          , V(V)
+      {
+      }
+      void vmult(BlockVector &dst, const BlockVector &src) const
+      {
+        u.reinit(src.block(0), true);
+        V.multiply(dst.block(1), src.block(1), Block::preconditioner);
+        dst.block(1) *= -1;
+        V.gradient(u, dst.block(1));
+        u.sadd(-1, 1, src.block(0));
+        amg.vmult(dst.block(0), u);
+      }
+
+    private:
+      const TrilinosWrappers::PreconditionAMG &amg;
+      const VolumetricOperator                &V;
+      mutable TrilinosWrappers::MPI::Vector    u;
+    };
+
+    /// |b - (A + G^T D G) x|, the residual of the condensed system (N).
+    double condensed_residual(const TrilinosWrappers::SparseMatrix &A,
+                              const VolumetricOperator             &V,
+                              const TrilinosWrappers::MPI::Vector  &x,
+                              const TrilinosWrappers::MPI::Vector  &b,
+                              const IndexSet &pressure_dofs)
+    {
+      TrilinosWrappers::MPI::Vector r(b), Ax(b),
+          p(pressure_dofs, b.get_mpi_communicator()), Dp(p);
+      A.vmult(Ax, x);
+      r -= Ax;
+      V.divergence(p, x);
+      V.multiply(Dp, p, Block::stiffness);
+      V.gradient(Ax, Dp);
+      r -= Ax;
+      return r.l2_norm();
+    }
+  } // namespace
+
+  LinearSolver::Result
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                      const VolumetricOperator             &volumetric,
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &b,
+                      const bool /*symmetric*/,
+                      const double relative_tolerance)
+  {
+    AssertThrow(chosen == LinearSolverType::iterative,
+                ExcMessage("The saddle point solve is for the iterative "
+                           "solver only."));
+    TrilinosWrappers::PreconditionAMG amg;
+    initialize_amg(A, amg);
+    const MPI_Comm comm = b.get_mpi_communicator();
+    BlockVector    X(std::vector<IndexSet>{b.locally_owned_elements(),
+                                           volumetric.pressure_dofs()},
+                  comm);
+    BlockVector    B(X);
+    B.block(0) = b;
+    const SaddlePointOperator           op(A, volumetric);
+    const BlockTriangularPreconditioner preconditioner(amg, volumetric);
+
+    // The condensed residual is what Newton needs; the saddle point
+    // residual bounds it only up to kappa/mu in the pressure rows, so the
+    // solve is tightened until the condensed residual is small enough.
+    const double target =
+        std::max(relative_tolerance, parameters.relative_tolerance) *
+        b.l2_norm();
+    double tolerance = target;
+    Result result;
+    for (unsigned int round = 0; round < 4; ++round)
+    {
+      const Result pass = iterate(op, preconditioner, X, B, false, tolerance);
+      result.iterations += pass.iterations;
+      result.breakdown = pass.breakdown;
+      x                = X.block(0);
+      result.residual =
+          condensed_residual(A, volumetric, x, b, volumetric.pressure_dofs());
+      result.converged = pass.converged && result.residual <= target;
+      if (result.converged || !pass.converged)
+        break;
+      tolerance *= 0.5 * target / result.residual;
+    }
     return finite_or_breakdown(x, result);
   }
 } // namespace softgrasp

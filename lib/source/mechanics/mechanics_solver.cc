@@ -368,10 +368,7 @@ namespace softgrasp
           << " MPI rank(s) x " << MultithreadInfo::n_threads() << " thread(s)."
           << std::endl;
     if (needs_tangent())
-      pcout << "Linear solver: "
-            << LinearSolverParameters::name(
-                   solver_parameters.linear_solver.resolve(solid->n_dofs()))
-            << std::endl;
+      pcout << "Linear solver: " << solid->linear_solver_name() << std::endl;
     for (const auto id : material_library.material_ids())
       pcout << "Material " << static_cast<unsigned>(id) << ": "
             << material_library.get(id).summary() << std::endl;

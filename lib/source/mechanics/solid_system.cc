@@ -93,6 +93,10 @@ namespace softgrasp
     linear_solver.set_problem_size(dofs.n_dofs());
     if (with_tangent && linear_solver.type() == LinearSolverType::iterative)
       compute_rigid_body_modes();
+    split_volumetric =
+        with_tangent && linear_solver.type() == LinearSolverType::iterative &&
+        parameters.discretization.formulation == Formulation::mixed_upJ &&
+        parameters.linear_solver.block_preconditioner;
 
     Point<dim> lower, upper;
     for (unsigned int d = 0; d < dim; ++d)
@@ -220,6 +224,12 @@ namespace softgrasp
       tangent = 0;
       rhs     = 0;
       build_tangent_constraints();
+      if (split_volumetric)
+        volumetric.reinit(owned,
+                          relevant,
+                          communicator(),
+                          tangent_homogeneous,
+                          nodal_conditions);
     }
     residual = 0;
     f_int    = 0;
@@ -230,8 +240,15 @@ namespace softgrasp
     using CellFilter = FilteredIterator<Iterator>;
     auto worker      = [&](const Iterator           &cell,
                       AssemblyScratchData<dim> &scratch,
-                      AssemblyCopyData         &copy) {
-      assembler.assemble(cell, u_ghosted, with_matrix, inertia, scratch, copy);
+                      AssemblyCopyData         &copy)
+    {
+      assembler.assemble(cell,
+                         u_ghosted,
+                         with_matrix,
+                         inertia,
+                         with_matrix && split_volumetric,
+                         scratch,
+                         copy);
     };
     auto copier = [&](const AssemblyCopyData &copy)
     {
@@ -252,19 +269,7 @@ namespace softgrasp
       homogeneous_constraints.distribute_local_to_global(
           cell_rhs, copy.dof_indices, residual);
       if (with_matrix)
-      {
-        if (nodal_conditions != nullptr)
-        {
-          FullMatrix<double> matrix(copy.matrix);
-          nodal_conditions->transform_cell_rows(
-              copy.dof_indices, matrix, cell_rhs);
-          tangent_constraints.distribute_local_to_global(
-              matrix, cell_rhs, copy.dof_indices, tangent, rhs);
-        }
-        else
-          tangent_constraints.distribute_local_to_global(
-              copy.matrix, cell_rhs, copy.dof_indices, tangent, rhs);
-      }
+        distribute_cell_tangent(copy, cell_rhs);
     };
     WorkStream::run(
         CellFilter(IteratorFilters::LocallyOwnedCell(), dofs.begin_active()),
@@ -282,6 +287,8 @@ namespace softgrasp
     {
       tangent.compress(VectorOperation::add);
       rhs.compress(VectorOperation::add);
+      if (split_volumetric)
+        volumetric.finalize();
     }
     residual.compress(VectorOperation::add);
     f_int.compress(VectorOperation::add);
@@ -325,9 +332,37 @@ namespace softgrasp
         !boundary_conditions.has_follower_loads() &&
         (nodal_conditions == nullptr || nodal_conditions->symmetric());
     const LinearSolver::Result result =
-        linear_solver.solve(tangent, du, rhs, symmetric, relative_tolerance);
+        split_volumetric
+            ? linear_solver.solve(
+                  tangent, volumetric, du, rhs, symmetric, relative_tolerance)
+            : linear_solver.solve(
+                  tangent, du, rhs, symmetric, relative_tolerance);
     tangent_constraints.distribute(du);
     return result;
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::distribute_cell_tangent(const AssemblyCopyData &copy,
+                                                 Vector<double> &cell_rhs)
+  {
+    FullMatrix<double> matrix(copy.matrix);
+    if (nodal_conditions != nullptr)
+      nodal_conditions->transform_cell_rows(copy.dof_indices, matrix, cell_rhs);
+    tangent_constraints.distribute_local_to_global(
+        matrix, cell_rhs, copy.dof_indices, tangent, rhs);
+    if (!split_volumetric)
+      return;
+    // The volumetric coupling stays out of the matrix; only its share of
+    // the inhomogeneous constraints enters the right-hand side.
+    FullMatrix<double> coupling(copy.volumetric);
+    Vector<double>     zero(cell_rhs.size());
+    if (nodal_conditions != nullptr)
+      nodal_conditions->transform_cell_rows(copy.dof_indices, coupling, zero);
+    zero = 0;
+    tangent_constraints.distribute_local_to_global(
+        zero, copy.dof_indices, rhs, coupling);
+    volumetric.add_cell(
+        copy.dof_indices, copy.G, copy.D, copy.S_inverse, copy.volume);
   }
 
   template <int dim> void SolidSystem<dim>::build_tangent_constraints()
@@ -341,6 +376,16 @@ namespace softgrasp
         constraints,
         AffineConstraints<double>::MergeConflictBehavior::no_conflicts_allowed);
     tangent_constraints.close();
+    if (!split_volumetric)
+      return;
+    tangent_homogeneous.clear();
+    tangent_homogeneous.reinit(relevant);
+    for (const auto &line : tangent_constraints.get_lines())
+    {
+      tangent_homogeneous.add_line(line.index);
+      tangent_homogeneous.add_entries(line.index, line.entries);
+    }
+    tangent_homogeneous.close();
   }
 
   template <int dim> void SolidSystem<dim>::set_inertia(const InertiaTerm &term)
@@ -373,6 +418,14 @@ namespace softgrasp
     TrilinosWrappers::MPI::Vector owned_mass(owned, communicator());
     owned_mass = mass;
     return owned_mass;
+  }
+
+  template <int dim> std::string SolidSystem<dim>::linear_solver_name() const
+  {
+    return LinearSolverParameters::name(linear_solver.type()) +
+           (split_volumetric
+                ? " (block: AMG on u, element Schur complement for p)"
+                : "");
   }
 
   template <int dim>

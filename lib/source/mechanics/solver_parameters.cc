@@ -364,6 +364,18 @@ namespace softgrasp
         "factorisation at the first Newton iteration of a load step and "
         "redo only the numeric factorisation in the iterations that follow. "
         "'false' redoes both at every Newton iteration (for comparison).");
+    prm.declare_entry(
+        "Block preconditioner",
+        "true",
+        Patterns::Bool(),
+        "Iterative solver with the mixed u-p-J formulation: build the AMG on "
+        "the displacement block alone and correct for the volumetric "
+        "(pressure) coupling with an element-wise Schur complement (the "
+        "block triangular preconditioner of the saddle point system), so "
+        "that the iterations do not grow as Poisson's ratio approaches 0.5. "
+        "'false': AMG on the condensed tangent (iterations grow with "
+        "kappa/mu). No effect on the direct solver or the displacement "
+        "formulation.");
     prm.leave_subsection();
   }
 
@@ -377,6 +389,7 @@ namespace softgrasp
     aggregation_threshold        = prm.get_double("AMG aggregation threshold");
     reuse_symbolic_factorization = prm.get_bool("Reuse symbolic factorization");
     smoother_sweeps              = prm.get_integer("AMG smoother sweeps");
+    block_preconditioner         = prm.get_bool("Block preconditioner");
     prm.leave_subsection();
   }
 

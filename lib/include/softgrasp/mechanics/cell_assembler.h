@@ -42,9 +42,14 @@ namespace softgrasp
     dealii::Vector<double>                       internal; ///< f_int (N)
     dealii::Vector<double>                       external; ///< f_ext (N)
     std::vector<dealii::types::global_dof_index> dof_indices;
-    bool        failed   = false; ///< inverted element
-    double      failed_J = 0;
-    std::string failed_cell;
+    /// With a split tangent (mixed formulation): matrix holds the
+    /// displacement block A, volumetric the coupling G^T D G, and G, D and
+    /// S_inverse its factors (VolumetricCoupling).
+    dealii::FullMatrix<double> volumetric, G, D, S_inverse;
+    double                     volume   = 0;     ///< of the cell (m^3)
+    bool                       failed   = false; ///< inverted element
+    double                     failed_J = 0;
+    std::string                failed_cell;
   };
 
   /**
@@ -87,12 +92,15 @@ namespace softgrasp
                   const BoundaryConditions<dim> &boundary_conditions,
                   const Formulation              formulation);
 
-    /// Fill @p copy for @p cell at displacement @p u (ghosted).
+    /// Fill @p copy for @p cell at displacement @p u (ghosted). With
+    /// @p split_volumetric the mixed formulation's volumetric coupling is
+    /// kept apart from the matrix (see AssemblyCopyData).
     void
     assemble(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
              const dealii::TrilinosWrappers::MPI::Vector                  &u,
              const bool                with_matrix,
              const InertiaTerm        &inertia,
+             const bool                split_volumetric,
              AssemblyScratchData<dim> &scratch,
              AssemblyCopyData         &copy) const;
 
@@ -113,8 +121,16 @@ namespace softgrasp
     void assemble_volume(const dealii::TrilinosWrappers::MPI::Vector &u,
                          const Material                              &material,
                          const bool                with_matrix,
+                         const bool                split_volumetric,
                          AssemblyScratchData<dim> &scratch,
                          AssemblyCopyData         &copy) const;
+
+    /// K_con of the mixed formulation, into the matrix or, with @p split,
+    /// into copy.volumetric with its factors.
+    void add_volumetric_coupling(const Material           &material,
+                                 const bool                split,
+                                 AssemblyScratchData<dim> &scratch,
+                                 AssemblyCopyData         &copy) const;
 
     void assemble_boundary(
         const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,

@@ -57,8 +57,19 @@ namespace softgrasp
     double dilatation(const unsigned int q) const;
     /// Element mean of p~ (Pa).
     double mean_pressure() const;
-    /// The n_basis x n_basis kernel A = M^-1 K_JJ M^-1 (Pa/m^6).
+    /// The n_basis x n_basis kernel A = M^-1 K_JJ M^-1 (Pa/m^3).
     const dealii::FullMatrix<double> &condensed_kernel() const;
+
+    /**
+     * The inverse of the approximate pressure Schur complement of the
+     * uncondensed element, S = A^-1 + c M, where c M (m^3/Pa) stands for
+     * G K_uu^-1 G^T with @p compliance c = 1/mu (1/Pa) for a solid of shear
+     * modulus mu (the pressure mass matrix approximation of Stokes flow).
+     * Bounded as U'' grows without limit: the basis of a block
+     * preconditioner robust in the bulk modulus.
+     */
+    void schur_inverse(const double                compliance,
+                       dealii::FullMatrix<double> &result) const;
 
   private:
     unsigned int               degree;
@@ -69,7 +80,7 @@ namespace softgrasp
     double                     p_mean = 0;
     dealii::FullMatrix<double> kernel;
     /// Scratch of reinit(), kept to avoid allocations per cell.
-    dealii::FullMatrix<double> mass, M_inverse;
+    dealii::FullMatrix<double> mass, M_inverse, scratch;
     dealii::Vector<double>     moments, coefficients;
   };
 } // namespace softgrasp

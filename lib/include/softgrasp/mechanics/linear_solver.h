@@ -1,6 +1,8 @@
 #ifndef softgrasp_mechanics_linear_solver_h
 #define softgrasp_mechanics_linear_solver_h
 
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <memory>
@@ -12,6 +14,55 @@ class Epetra_MultiVector;
 
 namespace softgrasp
 {
+  /**
+   * The volumetric coupling of a mixed (u-p-J) tangent with element-local
+   * pressure modes p. The condensed tangent K = A + G^T D G (D = C^-1)
+   * is the Schur complement of the saddle point system
+   *   [A  G^T] [du]   [b]
+   *   [G  -C ] [ p] = [0],
+   * whose entries stay bounded as the bulk modulus grows (C ~ M/kappa -> 0)
+   * while K's do not. The iterative solver therefore solves the saddle
+   * point system with the block triangular preconditioner
+   *   [A  G^T]^-1      AMG on A, and S = C + G A^-1 G^T approximated
+   *   [0  -S ]         element by element by C + M/mu,
+   * whose iterations are independent of the bulk modulus and the mesh
+   * (Elman, Silvester and Wathen, Finite Elements and Fast Iterative
+   * Solvers, ch. 4). Pressure vectors hold n_p entries per locally owned
+   * cell (pressure_dofs()); displacement vectors are the condensed ones of
+   * the tangent (constraints applied as in A).
+   */
+  class VolumetricOperator
+  {
+  public:
+    /// The element-block-diagonal pressure operators. The pressure rows of
+    /// the saddle point system are scaled by Sigma = h^2 D (h^3 the element
+    /// volume), which gives their residual the unit N and bounds the
+    /// condensed residual by the saddle point one.
+    enum class PressureBlock
+    {
+      stiffness,         ///< D (Pa/m^3)
+      scaled_stiffness,  ///< Sigma = h^2 D (Pa/m)
+      scaled_compliance, ///< Sigma C = h^2 I (m^2)
+      preconditioner     ///< (Sigma (C + M/mu))^-1 (1/m^2)
+    };
+
+    virtual ~VolumetricOperator() = default;
+    /// The pressure unknowns owned by this process (contiguous).
+    virtual const dealii::IndexSet &pressure_dofs() const = 0;
+    /// p = G u (m^3 per m of u).
+    virtual void
+    divergence(dealii::TrilinosWrappers::MPI::Vector       &p,
+               const dealii::TrilinosWrappers::MPI::Vector &u) const = 0;
+    /// u = G^T p, condensed (N per Pa of p).
+    virtual void
+    gradient(dealii::TrilinosWrappers::MPI::Vector       &u,
+             const dealii::TrilinosWrappers::MPI::Vector &p) const = 0;
+    /// dst = X src for the pressure block X.
+    virtual void multiply(dealii::TrilinosWrappers::MPI::Vector       &dst,
+                          const dealii::TrilinosWrappers::MPI::Vector &src,
+                          const PressureBlock block) const = 0;
+  };
+
   /**
    * The linear solve of one Newton step on Trilinos matrices: sparse direct
    * (Amesos MUMPS), or CG/GMRES preconditioned by Trilinos ML smoothed
@@ -66,7 +117,31 @@ namespace softgrasp
                  const bool                                    symmetric,
                  const double relative_tolerance = 0);
 
+    /// Solve (A + G^T D G) x = b iteratively through the saddle point
+    /// system of @p volumetric, with its block preconditioner.
+    Result solve(const dealii::TrilinosWrappers::SparseMatrix &A,
+                 const VolumetricOperator                     &volumetric,
+                 dealii::TrilinosWrappers::MPI::Vector        &x,
+                 const dealii::TrilinosWrappers::MPI::Vector  &b,
+                 const bool                                    symmetric,
+                 const double relative_tolerance = 0);
+
   private:
+    /// Set @p preconditioner up as ML AMG of @p A with the near null space.
+    void
+    initialize_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
+                   dealii::TrilinosWrappers::PreconditionAMG &preconditioner);
+
+    /// CG or GMRES on @p op with @p preconditioner, stopping at residual
+    /// norm @p tolerance.
+    template <typename Operator, typename Preconditioner, typename VectorType>
+    Result iterate(const Operator       &op,
+                   const Preconditioner &preconditioner,
+                   VectorType           &x,
+                   const VectorType     &b,
+                   const bool            symmetric,
+                   const double          tolerance) const;
+
     /// MUMPS through Amesos, keeping its symbolic factorisation.
     Result solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
                         dealii::TrilinosWrappers::MPI::Vector        &x,

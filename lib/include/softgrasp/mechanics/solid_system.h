@@ -17,6 +17,7 @@
 #include <softgrasp/mechanics/linear_solver.h>
 #include <softgrasp/mechanics/nodal_conditions.h>
 #include <softgrasp/mechanics/solver_parameters.h>
+#include <softgrasp/mechanics/volumetric_coupling.h>
 
 namespace softgrasp
 {
@@ -90,6 +91,9 @@ namespace softgrasp
     LinearSolver::Result solve(dealii::TrilinosWrappers::MPI::Vector &du,
                                const double relative_tolerance = 0);
 
+    /// The linear solver in use, for the run summary (after setup()).
+    std::string linear_solver_name() const;
+
     /// du . (f_ext - f_int) on free dofs, from the last assembly (N m).
     double residual_dot(const dealii::TrilinosWrappers::MPI::Vector &du) const;
 
@@ -146,6 +150,11 @@ namespace softgrasp
     void compute_rigid_body_modes();
     /// tangent_constraints = constraints + the nodal conditions' ones.
     void build_tangent_constraints();
+    /// Add one cell's tangent and right-hand side (rows transformed by the
+    /// nodal conditions, condensed through tangent_constraints); with a
+    /// split tangent, record its volumetric coupling.
+    void distribute_cell_tangent(const AssemblyCopyData &copy,
+                                 dealii::Vector<double> &cell_rhs);
 
     dealii::parallel::distributed::Triangulation<dim> &triangulation;
     const MaterialLibrary                             &materials;
@@ -165,7 +174,13 @@ namespace softgrasp
     dealii::AffineConstraints<double> homogeneous_constraints;
     /// constraints plus the nodal conditions' constraints of the tangent
     /// last assembled (what the last linear solve obeys)
-    dealii::AffineConstraints<double>          tangent_constraints;
+    dealii::AffineConstraints<double> tangent_constraints;
+    /// tangent_constraints without inhomogeneities (split tangent only)
+    dealii::AffineConstraints<double> tangent_homogeneous;
+    /// The tangent is A (in 'tangent') + the matrix-free volumetric
+    /// coupling (mixed formulation, iterative solver, block preconditioner)
+    bool                                       split_volumetric = false;
+    VolumetricCoupling<dim>                    volumetric;
     dealii::TrilinosWrappers::SparseMatrix     tangent;
     dealii::TrilinosWrappers::MPI::Vector      u, u_ghosted;
     dealii::TrilinosWrappers::MPI::Vector      rhs, residual, f_int, f_ext;

@@ -135,6 +135,10 @@ namespace softgrasp
     /// direct: keep MUMPS' ordering and symbolic factorisation over the
     /// Newton iterations of a load step (only the numeric one is redone)
     bool reuse_symbolic_factorization = true;
+    /// iterative, mixed u-p-J: AMG on the displacement block with an
+    /// element-wise pressure Schur complement (VolumetricOperator) instead
+    /// of AMG on the condensed tangent
+    bool block_preconditioner = true;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
