@@ -345,22 +345,35 @@ namespace softgrasp
   void SolidSystem<dim>::distribute_cell_tangent(const AssemblyCopyData &copy,
                                                  Vector<double> &cell_rhs)
   {
-    FullMatrix<double> matrix(copy.matrix);
+    // The cell matrices are copied only where nodal conditions rewrite
+    // their rows.
+    const FullMatrix<double> *matrix = &copy.matrix;
+    FullMatrix<double>        transformed;
     if (nodal_conditions != nullptr)
-      nodal_conditions->transform_cell_rows(copy.dof_indices, matrix, cell_rhs);
+    {
+      transformed = copy.matrix;
+      nodal_conditions->transform_cell_rows(
+          copy.dof_indices, transformed, cell_rhs);
+      matrix = &transformed;
+    }
     tangent_constraints.distribute_local_to_global(
-        matrix, cell_rhs, copy.dof_indices, tangent, rhs);
+        *matrix, cell_rhs, copy.dof_indices, tangent, rhs);
     if (!split_volumetric)
       return;
     // The volumetric coupling stays out of the matrix; only its share of
     // the inhomogeneous constraints enters the right-hand side.
-    FullMatrix<double> coupling(copy.volumetric);
-    Vector<double>     zero(cell_rhs.size());
+    const FullMatrix<double> *coupling = &copy.volumetric;
+    Vector<double>            zero(cell_rhs.size());
     if (nodal_conditions != nullptr)
-      nodal_conditions->transform_cell_rows(copy.dof_indices, coupling, zero);
-    zero = 0;
+    {
+      transformed = copy.volumetric;
+      nodal_conditions->transform_cell_rows(
+          copy.dof_indices, transformed, zero);
+      coupling = &transformed;
+      zero     = 0;
+    }
     tangent_constraints.distribute_local_to_global(
-        zero, copy.dof_indices, rhs, coupling);
+        zero, copy.dof_indices, rhs, *coupling);
     volumetric.add_cell(
         copy.dof_indices, copy.G, copy.D, copy.S_inverse, copy.volume);
   }
