@@ -131,6 +131,16 @@ namespace softgrasp
     balance_from  = active_from;
   }
 
+  template <int dim> bool CentralDifference<dim>::energy_keeps_growing()
+  {
+    const bool over = balance_limit > 0 && steps_taken >= 50 &&
+                      t >= balance_from && e.created > balance_limit;
+    steps_over_limit =
+        over && e.created >= created_before ? steps_over_limit + 1 : 0;
+    created_before = e.created;
+    return steps_over_limit >= balance_patience;
+  }
+
   template <int dim>
   void CentralDifference<dim>::set_constrained_dofs(
       const std::vector<types::global_dof_index> &dofs)
@@ -309,8 +319,7 @@ namespace softgrasp
       result = StepResult::not_finite;
     else if (!(smallest_J > 0))
       result = StepResult::inverted;
-    else if (balance_limit > 0 && steps_taken >= 50 && t >= balance_from &&
-             e.created > balance_limit)
+    else if (energy_keeps_growing())
       result = StepResult::unbalanced;
     if (result != StepResult::ok)
     {

@@ -554,13 +554,17 @@ namespace softgrasp
                       "integration creates more energy than this, relative "
                       "to the largest energy term: the sign of an unstable "
                       "step (energy lost, e.g. by impact on a rigid body, "
-                      "is dissipation and does not stop it); it acts after "
-                      "the first 2 % of "
-                      "the run (before, the energies are too small for a "
-                      "relative measure; unstable steps are caught by the "
-                      "checks for inverted elements and non-finite values). "
-                      "0 switches the check off (the balance error is still "
-                      "recorded in the history). Unit: 1.");
+                      "is dissipation and does not stop it) once the "
+                      "created energy has stayed above the limit and grown "
+                      "for 10 steps in a row, as an instability does (the "
+                      "jump of the relative measure at a rigid body's first "
+                      "touch, when all energies are near zero, decays at "
+                      "once); it acts after the first 2 % of the run "
+                      "(before, the energies are too small for a relative "
+                      "measure; unstable steps are caught by the checks for "
+                      "inverted elements and non-finite values). 0 switches "
+                      "the check off (the balance error is still recorded in "
+                      "the history). Unit: 1.");
     prm.declare_entry("Force kernel",
                       "vectorized",
                       Patterns::Selection("vectorized|reference"),

@@ -96,10 +96,13 @@ namespace softgrasp
      * an unstable integration gains energy; the impact losses of nodes
      * arrested by a rigid body are dissipation and are not refused), from
      * the 50th step and from time @p active_from (s) on: before, the
-     * energies are too small for a relative measure (a first touch of a
-     * rigid body makes it jump), while an unstable step grows
-     * exponentially and is caught by the non-finite and inversion checks,
-     * which act from the first step.
+     * energies are too small for a relative measure, while an unstable
+     * step grows exponentially and is caught by the non-finite and
+     * inversion checks, which act from the first step. A step is refused
+     * only once the created energy has stayed above the limit and kept
+     * growing for balance_patience steps in a row: an instability grows
+     * step after step, while the jump of the relative measure at a rigid
+     * body's first touch (all energies near zero) decays at once.
      */
     void set_balance_limit(const double limit, const double active_from = 0);
 
@@ -157,6 +160,9 @@ namespace softgrasp
     double kinetic_energy(const VectorType &velocity) const;
     /// Apply constrain() to u; turn its corrections into f_c and v.
     void apply_constraints(const double dt, const double h);
+    /// Whether the created energy has exceeded the balance limit and grown
+    /// for balance_patience steps in a row (counts this step).
+    bool energy_keeps_growing();
     /// Energies after a step of velocity step h; false if not finite.
     bool update_energies(const double h);
     void undo_step(const double internal_old,
@@ -168,8 +174,13 @@ namespace softgrasp
     dealii::IndexSet                  fixed;
     double                            alpha;
     double                            balance_limit = 0; ///< 0: none
-    double        balance_from = 0; ///< s, time from which the limit acts
-    unsigned long steps_taken  = 0;
+    double balance_from = 0; ///< s, time from which the limit acts
+    /// Steps in a row that a growing created energy must stay above the
+    /// limit before the last one is refused.
+    static constexpr unsigned int balance_patience = 10;
+    unsigned int  steps_over_limit = 0; ///< consecutive such steps so far
+    double        created_before   = 0; ///< e.created of the last step
+    unsigned long steps_taken      = 0;
     double        t = 0, last_dt = 0;
     VectorType    u, v_half, v, a, f, f_ext, f_contact, u_trial, eigenvector;
     mutable VectorType v_now; ///< velocity() at the current step
