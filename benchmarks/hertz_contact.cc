@@ -5,7 +5,7 @@
 //   hertz_contact <n> <ratio> <size (m)> [degree] [steps] [direct|iterative]
 //                 [global refinements] [nu] [depth (m)]
 //                 [inexact linear solves: true|false]
-//                 [block preconditioner: true|false]
+//                 [block preconditioner: true|false] [reuse AMG: true|false]
 //   mpirun -np 2 hertz_contact 8 1.5 0.05 2 4 iterative 1
 //
 // Prints the force and the contact radius against Hertz's values, Newton
@@ -36,6 +36,7 @@ main(int argc, char **argv)
   const double       depth       = argc > 9 ? std::stod(argv[9]) : 1e-4;
   const std::string  inexact     = argc > 10 ? argv[10] : "true";
   const std::string  block       = argc > 11 ? argv[11] : "true";
+  const std::string  reuse_amg   = argc > 12 ? argv[12] : "false";
 
   ParameterHandler prm;
   softgrasp::MechanicsSolver<3>::declare_parameters(prm);
@@ -56,7 +57,7 @@ main(int argc, char **argv)
           "subsection Newton\n set Inexact linear solves = " + inexact +
           "\nend\nsubsection Linear solver\n set Block "
           "preconditioner = " +
-          block + "\nend\n",
+          block + "\n set Reuse AMG = " + reuse_amg + "\nend\n",
       "benchmark");
   softgrasp::QuasiStaticSolver<3> solver(
       comm, softgrasp::SolverInputs<3>::parse(prm));

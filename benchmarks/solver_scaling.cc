@@ -3,6 +3,7 @@
 // bonded platens in 10 load steps, mixed u-p-J formulation, AMG-CG.
 //
 //   solver_scaling <cells per edge> [degree] [nu] [block: true|false]
+//                  [reuse AMG: true|false]
 //   mpirun -np 2 solver_scaling 31
 //
 // Prints one line: DoFs, ranks, wall time per phase (TimerOutput), Newton
@@ -31,9 +32,10 @@ main(int argc, char **argv)
   const unsigned                   degree = argc > 2 ? std::stoi(argv[2]) : 1;
   const double                     nu = argc > 3 ? std::stod(argv[3]) : 0.49;
 
-  const bool        block = argc > 4 ? std::string(argv[4]) != "false" : true;
-  const std::string prm   = softgrasp_tests::compressed_block_prm(
-      n, degree, nu, "iterative", block, "solver_scaling_output");
+  const bool block      = argc > 4 ? std::string(argv[4]) != "false" : true;
+  const bool reuse_amg  = argc > 5 ? std::string(argv[5]) != "false" : true;
+  const std::string prm = softgrasp_tests::compressed_block_prm(
+      n, degree, nu, "iterative", block, "solver_scaling_output", reuse_amg);
 
   ParameterHandler prm_handler;
   softgrasp::MechanicsSolver<3>::declare_parameters(prm_handler);

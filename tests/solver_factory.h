@@ -88,7 +88,8 @@ namespace softgrasp_tests
                                           const double       nu,
                                           const std::string &linear_solver,
                                           const bool         block,
-                                          const std::string &directory)
+                                          const std::string &directory,
+                                          const bool         reuse_amg = false)
   {
     std::ostringstream prm;
     prm << "subsection Mesh\n set Type = block\n subsection Block\n"
@@ -111,7 +112,7 @@ namespace softgrasp_tests
         << "subsection Linear solver\n set Type = " << linear_solver
         << "\n set Relative tolerance = 1e-6\n"
         << " set Block preconditioner = " << (block ? "true" : "false")
-        << "\nend\n"
+        << "\n set Reuse AMG = " << (reuse_amg ? "true" : "false") << "\nend\n"
         << "subsection Output\n set Directory = " << directory
         << "\n set VTU interval = 0\n set Verbose = false\nend\n";
     return prm.str();

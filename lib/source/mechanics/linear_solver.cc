@@ -4,6 +4,8 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -43,9 +45,19 @@ namespace softgrasp
     direct.reset();
   }
 
+  void LinearSolver::forget_matrix()
+  {
+    direct.reset();
+    amg.reset();
+    amg_matrix = nullptr;
+    amg_stale  = true;
+  }
+
   void LinearSolver::abandon_factorization()
   {
     (void)direct.release(); // deliberately not freed, see the header
+    amg.reset();            // not collective
+    amg_matrix = nullptr;
   }
 
   void LinearSolver::set_problem_size(const types::global_dof_index n_dofs)
@@ -198,6 +210,49 @@ namespace softgrasp
     preconditioner.initialize(A, ml);
   }
 
+  template <typename Attempt>
+  LinearSolver::Result
+  LinearSolver::with_amg(const TrilinosWrappers::SparseMatrix &A,
+                         const Attempt                        &attempt)
+  {
+    // A kept AMG refers to its matrix object: a different object needs a
+    // new one.
+    if (amg_matrix != static_cast<const void *>(&A.trilinos_matrix()))
+      amg_stale = true;
+    // Times are maxima over the ranks, so that every rank decides alike.
+    const MPI_Comm comm = A.get_mpi_communicator();
+    for (unsigned int pass = 0;; ++pass)
+    {
+      const bool fresh = amg_stale || !amg || !parameters.reuse_amg;
+      if (fresh)
+      {
+        Timer setup;
+        amg.reset(); // before the new one is built: one hierarchy in memory
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        initialize_amg(A, *amg);
+        amg_matrix        = &A.trilinos_matrix();
+        amg_stale         = false;
+        amg_setup_seconds = Utilities::MPI::max(setup.wall_time(), comm);
+      }
+      Timer        solve;
+      const Result result  = attempt(*amg);
+      const double seconds = Utilities::MPI::max(solve.wall_time(), comm);
+      if (!result.converged)
+        amg_stale = true;
+      else if (fresh)
+      {
+        amg_first_iterations  = result.iterations;
+        amg_iteration_seconds = seconds / std::max(result.iterations, 1u);
+      }
+      else if ((double(result.iterations) - amg_first_iterations) *
+                   amg_iteration_seconds >
+               amg_setup_seconds)
+        amg_stale = true; // its extra iterations cost more than a new one
+      if (result.converged || fresh || pass > 0)
+        return result;
+    }
+  }
+
   template <typename Operator, typename Preconditioner, typename VectorType>
   LinearSolver::Result
   LinearSolver::iterate(const Operator       &op,
@@ -252,12 +307,15 @@ namespace softgrasp
     x = 0;
     if (chosen == LinearSolverType::direct)
       return solve_direct(A, x, b);
-    TrilinosWrappers::PreconditionAMG preconditioner;
-    initialize_amg(A, preconditioner);
     const double tolerance =
         std::max(relative_tolerance, parameters.relative_tolerance) *
         b.l2_norm();
-    return iterate(A, preconditioner, x, b, symmetric, tolerance);
+    return with_amg(A,
+                    [&](const TrilinosWrappers::PreconditionAMG &amg)
+                    {
+                      x = 0;
+                      return iterate(A, amg, x, b, symmetric, tolerance);
+                    });
   }
 
   namespace
@@ -352,16 +410,13 @@ namespace softgrasp
     AssertThrow(chosen == LinearSolverType::iterative,
                 ExcMessage("The saddle point solve is for the iterative "
                            "solver only."));
-    TrilinosWrappers::PreconditionAMG amg;
-    initialize_amg(A, amg);
     const MPI_Comm comm = b.get_mpi_communicator();
     BlockVector    X(std::vector<IndexSet>{b.locally_owned_elements(),
                                            volumetric.pressure_dofs()},
                   comm);
     BlockVector    B(X);
     B.block(0) = b;
-    const SaddlePointOperator           op(A, volumetric);
-    const BlockTriangularPreconditioner preconditioner(amg, volumetric);
+    const SaddlePointOperator op(A, volumetric);
 
     // The condensed residual is what Newton needs; the saddle point
     // residual bounds it only up to kappa/mu in the pressure rows, so the
@@ -369,21 +424,27 @@ namespace softgrasp
     const double target =
         std::max(relative_tolerance, parameters.relative_tolerance) *
         b.l2_norm();
-    double tolerance = target;
-    Result result;
-    for (unsigned int round = 0; round < 4; ++round)
+    const auto attempt = [&](const TrilinosWrappers::PreconditionAMG &amg)
     {
-      const Result pass = iterate(op, preconditioner, X, B, false, tolerance);
-      result.iterations += pass.iterations;
-      result.breakdown = pass.breakdown;
-      x                = X.block(0);
-      result.residual =
-          condensed_residual(A, volumetric, x, b, volumetric.pressure_dofs());
-      result.converged = pass.converged && result.residual <= target;
-      if (result.converged || !pass.converged)
-        break;
-      tolerance *= 0.5 * target / result.residual;
-    }
-    return finite_or_breakdown(x, result);
+      const BlockTriangularPreconditioner preconditioner(amg, volumetric);
+      X                = 0;
+      double tolerance = target;
+      Result result;
+      for (unsigned int round = 0; round < 4; ++round)
+      {
+        const Result pass = iterate(op, preconditioner, X, B, false, tolerance);
+        result.iterations += pass.iterations;
+        result.breakdown = pass.breakdown;
+        x                = X.block(0);
+        result.residual =
+            condensed_residual(A, volumetric, x, b, volumetric.pressure_dofs());
+        result.converged = pass.converged && result.residual <= target;
+        if (result.converged || !pass.converged)
+          break;
+        tolerance *= 0.5 * target / result.residual;
+      }
+      return finite_or_breakdown(x, result);
+    };
+    return with_amg(A, attempt);
   }
 } // namespace softgrasp

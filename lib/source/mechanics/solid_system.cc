@@ -67,11 +67,14 @@ namespace softgrasp
                                       false,
                                       Utilities::MPI::this_mpi_process(comm));
       sparsity.compress();
+      linear_solver.forget_matrix(); // before the matrix is replaced
       tangent.reinit(sparsity);
-      linear_solver.forget_factorization();
     }
     else
+    {
+      linear_solver.forget_matrix();
       tangent.clear();
+    }
 
     reaction_dofs.clear();
     std::vector<IndexSet> component_dofs(dim);

@@ -99,9 +99,13 @@ namespace softgrasp
     void set_rigid_body_modes(
         const std::vector<dealii::TrilinosWrappers::MPI::Vector> &modes);
 
-    /// The sparsity pattern of the matrices to come differs from the last
-    /// one's: the direct solver's symbolic factorisation is redone.
+    /// Drop the direct solver's symbolic factorisation (redone at the
+    /// next solve); the kept AMG stays.
     void forget_factorization();
+
+    /// The matrix object is about to be replaced (new sparsity pattern):
+    /// drop everything that refers to the old one (factorisation, AMG).
+    void forget_matrix();
 
     /// Drop the direct solver's state without freeing it (MUMPS' cleanup
     /// is collective): for a destructor that may run on one rank only
@@ -132,6 +136,13 @@ namespace softgrasp
     initialize_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
                    dealii::TrilinosWrappers::PreconditionAMG &preconditioner);
 
+    /// Run @p attempt (a solve, from x = 0) with the AMG of @p A: the kept
+    /// one while it serves ('Reuse AMG'), else a new one; a failure with a
+    /// kept AMG is repeated once with a new one.
+    template <typename Attempt>
+    Result with_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
+                    const Attempt                                &attempt);
+
     /// CG or GMRES on @p op with @p preconditioner, stopping at residual
     /// norm @p tolerance.
     template <typename Operator, typename Preconditioner, typename VectorType>
@@ -153,6 +164,16 @@ namespace softgrasp
     std::unique_ptr<DirectState>                       direct;
     std::vector<dealii::TrilinosWrappers::MPI::Vector> modes;
     std::unique_ptr<Epetra_MultiVector>                null_space;
+    /// The AMG kept from earlier solves, the matrix it was built for (it
+    /// holds a pointer to it), the iterations and the time per iteration
+    /// (s) of its first solve, the time it took to build (s), and whether
+    /// the next solve needs a new one.
+    std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
+    const void  *amg_matrix            = nullptr;
+    unsigned int amg_first_iterations  = 0;
+    double       amg_iteration_seconds = 0;
+    double       amg_setup_seconds     = 0;
+    bool         amg_stale             = true;
   };
 } // namespace softgrasp
 

@@ -139,6 +139,9 @@ namespace softgrasp
     /// element-wise pressure Schur complement (VolumetricOperator) instead
     /// of AMG on the condensed tangent
     bool block_preconditioner = true;
+    /// iterative: keep the AMG hierarchy over Newton iterations and load
+    /// steps while it serves (LinearSolver)
+    bool reuse_amg = false;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
