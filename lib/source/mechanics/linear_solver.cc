@@ -215,6 +215,12 @@ namespace softgrasp
   LinearSolver::with_amg(const TrilinosWrappers::SparseMatrix &A,
                          const Attempt                        &attempt)
   {
+    if (!parameters.reuse_amg) // a new AMG, freed after the solve
+    {
+      TrilinosWrappers::PreconditionAMG preconditioner;
+      initialize_amg(A, preconditioner);
+      return attempt(preconditioner);
+    }
     // A kept AMG refers to its matrix object: a different object needs a
     // new one.
     if (amg_matrix != static_cast<const void *>(&A.trilinos_matrix()))
@@ -223,7 +229,7 @@ namespace softgrasp
     const MPI_Comm comm = A.get_mpi_communicator();
     for (unsigned int pass = 0;; ++pass)
     {
-      const bool fresh = amg_stale || !amg || !parameters.reuse_amg;
+      const bool fresh = amg_stale || !amg;
       if (fresh)
       {
         Timer setup;
