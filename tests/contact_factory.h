@@ -81,6 +81,35 @@ namespace softgrasp_tests
       << rigid_body("floor", "plane", "plane", "1", "0: 0, 0, 0, 1, 0, 0, 0");
     return s.str();
   }
+
+  /**
+   * The plane-strain frictional drag of examples/frictional_drag: a rigid
+   * cylinder (R = 10 mm, geom finger/link, reference normal -y) pressed
+   * 5 mm into a 120 x 20 mm block (G = 17.2 kPa, nu = 0.45, Q1 mixed u-p-J,
+   * 60 x 10 cells, bonded base id 2, contact on the top id 3) until
+   * t = 0.5 s and pulled 20 mm along x until t = 1.5 s, friction @p mu.
+   * The caller adds the 'Time' and 'Output' subsections.
+   */
+  inline std::string frictional_drag_prm(const double mu)
+  {
+    std::ostringstream s;
+    s << block("-0.06, 0", "0.06, 0.02", "60, 10")
+      << "subsection Finite element\n set Formulation = mixed u-p-J\n"
+      << " set Polynomial degree = 1\nend\n"
+      << neo_hookean(17241.4, 0.45)
+      << "subsection Boundary conditions\n set Dirichlet boundary ids = 2\n"
+      << " subsection Dirichlet boundary 2\n  set Components = x, y\n"
+      << " end\nend\n"
+      << contact("3", mu) << "subsection Rigid bodies\n set Names = finger\n"
+      << " subsection Body finger\n  set Geom names = link\n"
+      << "  set Trajectory = 0: -0.01, 0.0305, 0, 1, 0, 0, 0; "
+      << "0.5: -0.01, 0.0255, 0, 1, 0, 0, 0; 1.5: 0.01, 0.0255, 0, 1, 0, 0, "
+         "0\n"
+      << "  subsection Geom link\n   set Type = cylinder\n"
+      << "   set Size = 0.01, 0.1\n   set Reference normal = 0, -1, 0\n"
+      << "  end\n end\nend\n";
+    return s.str();
+  }
 } // namespace softgrasp_tests
 
 #endif

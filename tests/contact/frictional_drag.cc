@@ -14,6 +14,7 @@
 //    inertia has died out) and the kinetic energy is a negligible fraction
 //    of the work of the press; the snaps release at most a few per cent of
 //    it for a moment.
+#include "../contact_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
 
@@ -26,26 +27,7 @@ main(int argc, char **argv)
   initlog(8);
   const double      mu = 0.5;
   const std::string prm =
-      "subsection Mesh\n set Type = block\n subsection Block\n"
-      "  set Lower corner = -0.06, 0\n  set Upper corner = 0.06, 0.02\n"
-      "  set Subdivisions = 60, 10\n end\nend\n"
-      "subsection Finite element\n set Formulation = mixed u-p-J\n"
-      " set Polynomial degree = 1\nend\n"
-      "subsection Materials\n set Material ids = 0\n subsection Material 0\n"
-      "  set Model = neo-Hookean\n  set Density = 1000\n"
-      "  subsection neo-Hookean\n   set Shear modulus = 17241.4\n  end\n"
-      "  subsection Volumetric\n   set Poisson's ratio = 0.45\n  end\n"
-      " end\nend\n"
-      "subsection Boundary conditions\n set Dirichlet boundary ids = 2\n"
-      " subsection Dirichlet boundary 2\n  set Components = x, y\n end\nend\n"
-      "subsection Contact\n set Slave boundary ids = 3\n"
-      " set Friction coefficient = 0.5\nend\n"
-      "subsection Rigid bodies\n set Names = finger\n"
-      " subsection Body finger\n  set Geom names = link\n"
-      "  set Trajectory = 0: -0.01, 0.0305, 0, 1, 0, 0, 0; "
-      "0.5: -0.01, 0.0255, 0, 1, 0, 0, 0; 1.5: 0.01, 0.0255, 0, 1, 0, 0, 0\n"
-      "  subsection Geom link\n   set Type = cylinder\n"
-      "   set Size = 0.01, 0.1\n  end\n end\nend\n"
+      frictional_drag_prm(mu) +
       "subsection Time\n set Integrator = implicit dynamic\n"
       " set End time = 1.5\n set Time step = 0.05\nend\n"
       "subsection Linear solver\n set Type = direct\nend\n"
@@ -65,15 +47,15 @@ main(int argc, char **argv)
   for (size_t r = 0; r < contact.rows.size(); ++r)
     max_normal =
         std::max(max_normal, contact.value(r, "finger/link:normal_force"));
-  double max_kinetic = 0, max_imbalance = 0;
-  double drag_sum = 0, normal_sum = 0;
+  double       max_kinetic = 0, max_imbalance = 0;
+  double       drag_sum = 0, normal_sum = 0;
   unsigned int n_sliding = 0;
   for (size_t r = 0; r < contact.rows.size(); ++r)
   {
-    const double t        = contact.value(r, "time");
-    const double normal   = contact.value(r, "finger/link:normal_force");
-    const bool   loaded   = normal > 0.1 * max_normal;
-    max_kinetic = std::max(max_kinetic, history.value(r, "kinetic_energy"));
+    const double t      = contact.value(r, "time");
+    const double normal = contact.value(r, "finger/link:normal_force");
+    const bool   loaded = normal > 0.1 * max_normal;
+    max_kinetic     = std::max(max_kinetic, history.value(r, "kinetic_energy"));
     const double fx = contact.value(r, "finger:F_x");
     const double fy = contact.value(r, "finger:F_y");
     const double rx = history.value(r, "reaction_2_x");
@@ -117,8 +99,8 @@ main(int argc, char **argv)
   const double press_work = 0.5 * normal * 0.005;
   dealii::deallog << "pull finished at t = " << end_time << " s in " << last
                   << " steps" << std::endl;
-  dealii::deallog << "last 10 mm of pull: drag " << std::setprecision(3)
-                  << drag << " N/m, normal " << normal << " N/m, ratio "
+  dealii::deallog << "last 10 mm of pull: drag " << std::setprecision(3) << drag
+                  << " N/m, normal " << normal << " N/m, ratio "
                   << drag / normal << " (mu = " << mu << ")" << std::endl;
   dealii::deallog << "end: " << n_stick << " nodes stick, " << n_slip
                   << " slip, largest |f_t| / (mu f_n) " << max_coulomb

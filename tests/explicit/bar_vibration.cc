@@ -7,6 +7,7 @@
 // energy balance must hold within 1 % at every step, and the step from the
 // power iteration must be stable (for Q1 it equals the analytic h/c of
 // linear elements with lumped mass). The lumped mass adds up to rho V.
+// With stiffness-proportional damping the mode decays at the analytic rate.
 #include "../material_factory.h"
 #include "../tests.h"
 
@@ -84,6 +85,20 @@ namespace
     LinearAlgebra::distributed::Vector<double> mass, u0, v0;
   };
 
+  /// The tip dof, the x component at (L, 0, 0), if this rank owns it.
+  types::global_dof_index tip_dof(const Bar &bar)
+  {
+    std::map<types::global_dof_index, Point<3>> support;
+    DoFTools::map_dofs_to_support_points(bar.mapping, bar.dofs, support);
+    types::global_dof_index tip = numbers::invalid_dof_index;
+    for (const auto &[i, x] : support)
+      if (bar.dofs.locally_owned_dofs().is_element(i) &&
+          x.distance(Point<3>(L, 0, 0)) < 1e-12 &&
+          (tip == numbers::invalid_dof_index || i < tip))
+        tip = i; // the node's first dof is its x component (FESystem)
+    return tip;
+  }
+
   void run(const unsigned int     degree,
            const unsigned int     elements,
            const MaterialLibrary &materials)
@@ -105,15 +120,7 @@ namespace
     const double omega = M_PI * c / (2 * L), V = 1e-3 * c;
     VectorTools::interpolate(mapping, dofs, ModeVelocity(V), v0);
 
-    // The tip dof: x component at (L, 0, 0).
-    std::map<types::global_dof_index, Point<3>> support;
-    DoFTools::map_dofs_to_support_points(mapping, dofs, support);
-    types::global_dof_index tip = numbers::invalid_dof_index;
-    for (const auto &[i, x] : support)
-      if (dofs.locally_owned_dofs().is_element(i) &&
-          x.distance(Point<3>(L, 0, 0)) < 1e-12 &&
-          (tip == numbers::invalid_dof_index || i < tip))
-        tip = i; // the node's first dof is its x component (FESystem)
+    const types::global_dof_index tip = tip_dof(bar);
 
     CentralDifference<3> integrator(*bar.force, mass, fixed);
     integrator.initialize(0, bar.u0, v0);
@@ -162,6 +169,72 @@ namespace
     }
     SG_CHECK(worst_balance < 0.01, "energy balance");
   }
+  /// Stiffness damping beta (Rayleigh): started in the first mode, the tip
+  /// swings with the logarithmic decrement 2 pi xi / sqrt(1 - xi^2) of
+  /// xi = beta omega_1 / 2 (within 3 %), the energy balance with the
+  /// damping's dissipation holds within 1 %, and the step shortened for the
+  /// highest mode's damping (2/omega_max (sqrt(1 + xi^2) - xi)) is stable
+  /// although that mode is overdamped.
+  void damped(const MaterialLibrary &materials)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    Bar            bar(1, 20, materials);
+    IndexSet       fixed =
+        DoFTools::extract_boundary_dofs(bar.dofs, ComponentMask(), {0});
+    fixed              = fixed & bar.dofs.locally_owned_dofs();
+    const double c     = std::sqrt(2 * mu / rho);
+    const double omega = M_PI * c / (2 * L);
+    VectorTools::interpolate(
+        bar.mapping, bar.dofs, ModeVelocity(1e-3 * c), bar.v0);
+    const double         xi = 0.05, beta = 2 * xi / omega;
+    CentralDifference<3> integrator(*bar.force, bar.mass, fixed, 0, beta);
+    integrator.initialize(0, bar.u0, bar.v0);
+    const double critical = integrator.critical_time_step();
+    const double xi_max   = beta / critical;
+    const double dt =
+        0.9 * critical * (std::sqrt(1 + xi_max * xi_max) - xi_max);
+    const types::global_dof_index tip = tip_dof(bar);
+    // the largest tip displacement in each half period with u > 0
+    std::vector<double> peaks;
+    double              previous = 0, peak = 0, worst_balance = 0;
+    bool                stable = true;
+    while (integrator.time() < 2.6 * 2 * M_PI / omega && stable)
+    {
+      stable = integrator.step(dt) == CentralDifference<3>::StepResult::ok;
+      double tip_u = tip != numbers::invalid_dof_index
+                         ? integrator.displacement()[tip]
+                         : 0.0;
+      tip_u        = Utilities::MPI::sum(tip_u, comm);
+      if (tip_u > 0)
+        peak = std::max(peak, tip_u);
+      if (previous > 0 && tip_u <= 0)
+      {
+        peaks.push_back(peak);
+        peak = 0;
+      }
+      previous = tip_u;
+      worst_balance =
+          std::max(worst_balance, integrator.energies().balance_error);
+    }
+    SG_CHECK(stable && peaks.size() >= 3, "ran through two periods");
+    const double decrement = std::log(peaks[0] / peaks[2]) / 2;
+    const double measured =
+        decrement / std::sqrt(4 * M_PI * M_PI + decrement * decrement);
+    dealii::deallog << "stiffness damping: decay within 3 % of xi = beta "
+                       "omega_1 / 2: "
+                    << (std::abs(measured / xi - 1) < 0.03)
+                    << ", energy balance within 1 %: " << (worst_balance < 0.01)
+                    << ", damped step stable (xi = " << std::setprecision(2)
+                    << xi_max << " at omega_max): " << stable << std::endl;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "stiffness damping: xi measured " << measured
+                << ", expected " << xi << ", energy balance " << worst_balance
+                << ", dt " << dt << " s (critical " << critical << " s)"
+                << std::endl;
+    SG_CHECK(std::abs(measured / xi - 1) < 0.03, "decay rate");
+    SG_CHECK(worst_balance < 0.01, "energy balance with damping");
+  }
+
   /// Ten times the critical step blows up: a step that inverts an element
   /// or produces NaN is refused and the last good state is kept.
   void unstable(const MaterialLibrary &materials)
@@ -202,5 +275,6 @@ main(int argc, char **argv)
   const MaterialLibrary materials = bar_material();
   run(1, 20, materials);
   run(2, 10, materials);
+  damped(materials);
   unstable(materials);
 }

@@ -3,9 +3,10 @@
 # example switched to 'Time/Integrator = explicit dynamic' (the same .prm
 # plus one line) is run to t = 0.4 s (reference), and run to t = 0.2 s and
 # resumed from its checkpoint to t = 0.4 s. The checkpoint holds the
-# displacement, the half-step velocity, the power iteration's mode and the
-# integrator's scalars (time step, energies), so the contact force and
-# energy histories of the resumed run must equal the reference.
+# displacement, the half-step velocity, the power iteration's mode, the
+# stiffness damping force and the integrator's scalars (time step,
+# energies), so the contact force and energy histories of the resumed run
+# must equal the reference.
 # Then a run whose steps invert elements stops with the cause named and
 # its last good state written.
 #   explicit_resume.sh <ironing executable> <ironing.prm> <work dir>
@@ -16,7 +17,7 @@ work=$3
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
-{ cat "$prm"; printf 'subsection Time\n set Integrator = explicit dynamic\n set End time = 0.4\nend\nsubsection Explicit dynamics\n set Mass damping = 300\nend\nsubsection Checkpoint\n set Interval = 1\nend\n'; } > base.prm
+{ cat "$prm"; printf 'subsection Time\n set Integrator = explicit dynamic\n set End time = 0.4\nend\nsubsection Explicit dynamics\n set Mass damping = 300\n set Stiffness damping = 0.3\nend\nsubsection Checkpoint\n set Interval = 1\nend\n'; } > base.prm
 { cat base.prm; printf 'subsection Output\n set Directory = reference\n set VTU interval = 0\nend\n'; } > reference.prm
 { cat base.prm; printf 'subsection Output\n set Directory = split\n set VTU interval = 0\nend\n'; } > split.prm
 { cat split.prm; printf 'subsection Time\n set End time = 0.2\nend\n'; } > first.prm

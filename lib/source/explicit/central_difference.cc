@@ -11,11 +11,13 @@ namespace softgrasp
       const InternalForceOperator<dim> &force,
       const VectorType                 &mass,
       const IndexSet                   &fixed,
-      const double                      mass_damping)
+      const double                      mass_damping,
+      const double                      stiffness_damping)
       : force(force)
       , mass(mass)
       , fixed(fixed)
       , alpha(mass_damping)
+      , beta(stiffness_damping)
   {
     for (auto *vector : {&u,
                          &v_half,
@@ -31,7 +33,9 @@ namespace softgrasp
                          &v_half_prev,
                          &a_prev,
                          &f_prev,
-                         &f_ext_prev})
+                         &f_ext_prev,
+                         &f_damping,
+                         &f_damping_prev})
       force.initialize_dof_vector(*vector);
     const IndexSet &owned = u.locally_owned_elements();
     is_free.resize(owned.n_elements());
@@ -42,7 +46,8 @@ namespace softgrasp
   template <int dim>
   void CentralDifference<dim>::acceleration(const double      time,
                                             const VectorType &displacement,
-                                            const VectorType &velocity)
+                                            const VectorType &velocity,
+                                            const double      rate_dt)
   {
     const auto result = force.apply(displacement, f);
     internal_energy   = result.energy;
@@ -50,12 +55,23 @@ namespace softgrasp
     f_ext             = 0;
     if (external_forces)
       external_forces(time, displacement, f_ext);
+    // beta K v^{n+1/2} as the rate of the internal forces over the step;
+    // without a step (start, restart) the damping force is kept as it is
+    const bool rate = beta > 0 && rate_dt > 0;
     for (unsigned int k = 0; k < is_free.size(); ++k)
+    {
+      if (rate)
+        f_damping.local_element(k) =
+            is_free[k] ? beta * (f.local_element(k) - f_prev.local_element(k)) /
+                             rate_dt
+                       : 0.0;
       a.local_element(k) = is_free[k]
-                               ? (f_ext.local_element(k) - f.local_element(k)) /
+                               ? (f_ext.local_element(k) - f.local_element(k) -
+                                  f_damping.local_element(k)) /
                                          mass.local_element(k) -
                                      alpha * velocity.local_element(k)
                                : 0.0;
+    }
   }
 
   /// 1/2 v.M.v over all ranks.
@@ -121,6 +137,12 @@ namespace softgrasp
       eigenvector = y;
     }
     return 2.0 / std::sqrt(std::max(lambda, 1e-300));
+  }
+
+  template <int dim>
+  void CentralDifference<dim>::set_stiffness_damping(const double damping)
+  {
+    beta = damping;
   }
 
   template <int dim>
@@ -236,7 +258,9 @@ namespace softgrasp
         const double m = mass.local_element(k);
         external += f_ext_prev.local_element(k) * v_mean * h;
         contact += f_contact.local_element(k) * v_mean * h;
-        damping += alpha * m * v_half_prev.local_element(k) * v_mean * h;
+        damping += (alpha * m * v_half_prev.local_element(k) +
+                    f_damping_prev.local_element(k)) *
+                   v_mean * h;
         kinetic += 0.5 * m * v_new * v_new;
       }
       else // the reaction f_int - f_ext is the supports' force on the body
@@ -281,6 +305,7 @@ namespace softgrasp
     v_half.swap(v_half_prev);
     f.swap(f_prev);
     f_ext.swap(f_ext_prev);
+    f_damping.swap(f_damping_prev);
     a.swap(a_prev);
     internal_energy = internal_old;
     smallest_J      = J_old;
@@ -296,6 +321,7 @@ namespace softgrasp
     // f, f_ext and a).
     f_prev.swap(f);
     f_ext_prev.swap(f_ext);
+    f_damping_prev.swap(f_damping);
     a_prev.swap(a);
     const Energies e_old        = e;
     const double   internal_old = internal_energy, J_old = smallest_J;
@@ -312,7 +338,7 @@ namespace softgrasp
     apply_constraints(dt, h);
     const double previous_time = t;
     t += dt;
-    acceleration(t, u, v_half);
+    acceleration(t, u, v_half, dt);
 
     StepResult result = StepResult::ok;
     if (!update_energies(h))
@@ -352,7 +378,8 @@ namespace softgrasp
   template <int dim>
   void CentralDifference<dim>::restore(const VectorType          &u0,
                                        const VectorType          &v_half0,
-                                       const std::vector<double> &s)
+                                       const std::vector<double> &s,
+                                       const VectorType          *damping_force)
   {
     AssertThrow(s.size() == 11,
                 ExcMessage("The explicit integrator's saved state has " +
@@ -364,6 +391,8 @@ namespace softgrasp
     started = s[2] > 0;
     u       = u0;
     v_half  = v_half0;
+    if (damping_force)
+      f_damping = *damping_force;
     acceleration(t, u, v_half);
     e.kinetic       = s[3];
     e.internal      = s[4];
@@ -373,6 +402,13 @@ namespace softgrasp
     e.damping       = s[8];
     e0.kinetic      = s[9];
     e0.internal     = s[10];
+  }
+
+  template <int dim>
+  const typename CentralDifference<dim>::VectorType &
+  CentralDifference<dim>::damping_force() const
+  {
+    return f_damping;
   }
 
   template <int dim>

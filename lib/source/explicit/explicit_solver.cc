@@ -17,7 +17,10 @@ namespace softgrasp
                                       const SolverInputs<dim> &inputs)
       : MechanicsSolver<dim>(comm, inputs)
   {
-    this->n_restored_fields = 2; // half-step velocity, highest mode
+    // half-step velocity, highest mode and, with stiffness damping, the
+    // damping force of the last step
+    this->n_restored_fields =
+        this->solver_parameters.explicit_dynamics.stiffness_damping > 0 ? 3 : 2;
   }
 
   template <int dim>
@@ -109,6 +112,25 @@ namespace softgrasp
         this->solver_parameters.explicit_dynamics.mass_scaling_time_step;
     if (target > 0)
       scale_mass(target);
+  }
+
+  template <int dim> double ExplicitSolver<dim>::step_fraction() const
+  {
+    // central differences with damping lagged half a step: the highest
+    // mode is stable up to 2/omega (sqrt(1 + xi^2) - xi), xi = beta omega/2
+    const auto  &ep = this->solver_parameters.explicit_dynamics;
+    const double xi = ep.stiffness_damping;
+    return ep.safety_factor * (std::sqrt(1 + xi * xi) - xi);
+  }
+
+  template <int dim> void ExplicitSolver<dim>::set_time_step(const double dt)
+  {
+    // beta = xi x the critical step the time step stands for, so that a
+    // restart (which knows the time step) damps exactly as before
+    time_step = dt;
+    integrator->set_stiffness_damping(
+        this->solver_parameters.explicit_dynamics.stiffness_damping * dt /
+        step_fraction());
   }
 
   template <int dim>
@@ -229,12 +251,14 @@ namespace softgrasp
 
   template <int dim> void ExplicitSolver<dim>::save_checkpoint()
   {
-    // Ghosted Trilinos copies of the half-step velocity and the highest
-    // mode (the power iteration's warm start).
-    std::array<TrilinosWrappers::MPI::Vector, 2> fields;
-    const std::array<const VectorType *, 2>      sources = {
-             {&integrator->velocity_half_step(), &integrator->highest_mode()}};
-    for (unsigned int k = 0; k < 2; ++k)
+    // Ghosted Trilinos copies of the half-step velocity, the highest mode
+    // (the power iteration's warm start) and the damping force.
+    std::array<TrilinosWrappers::MPI::Vector, 3> fields;
+    const std::array<const VectorType *, 3>      sources = {
+             {&integrator->velocity_half_step(),
+              &integrator->highest_mode(),
+              &integrator->damping_force()}};
+    for (unsigned int k = 0; k < this->n_restored_fields; ++k)
     {
       TrilinosWrappers::MPI::Vector owned(this->solid->locally_owned_dofs(),
                                           this->comm);
@@ -249,7 +273,10 @@ namespace softgrasp
     this->state.integrator_state = integrator->state_scalars();
     this->state.integrator_state.insert(this->state.integrator_state.end(),
                                         {double(steps), time_step});
-    this->write_checkpoint({&fields[0], &fields[1]});
+    std::vector<const TrilinosWrappers::MPI::Vector *> written;
+    for (unsigned int k = 0; k < this->n_restored_fields; ++k)
+      written.push_back(&fields[k]);
+    this->write_checkpoint(written);
   }
 
   template <int dim>
@@ -331,12 +358,16 @@ namespace softgrasp
       u(i) = this->solid->solution()[i];
     if (resume)
     {
-      VectorType mode;
+      VectorType mode, damping;
       force->initialize_dof_vector(mode);
+      force->initialize_dof_vector(damping);
+      const bool damped = this->n_restored_fields > 2;
       for (const auto i : this->solid->locally_owned_dofs())
       {
         v(i)    = this->restored_fields[0][i];
         mode(i) = this->restored_fields[1][i];
+        if (damped)
+          damping(i) = this->restored_fields[2][i];
       }
       auto scalars = this->state.integrator_state;
       if (scalars.size() < 2)
@@ -347,7 +378,7 @@ namespace softgrasp
       scalars.pop_back();
       steps = static_cast<unsigned long>(scalars.back());
       scalars.pop_back();
-      integrator->restore(u, v, scalars);
+      integrator->restore(u, v, scalars, damped ? &damping : nullptr);
       integrator->set_highest_mode(mode);
     }
     else
@@ -373,18 +404,24 @@ namespace softgrasp
     if (!resume) // a restart continues with the saved step
     {
       critical_step = integrator->critical_time_step(40);
-      time_step     = ep.fixed_time_step > 0 ? ep.fixed_time_step
-                                             : ep.safety_factor * critical_step;
+      set_time_step(ep.fixed_time_step > 0 ? ep.fixed_time_step
+                                           : step_fraction() * critical_step);
     }
-    else
-      critical_step = time_step / ep.safety_factor;
-    if (ep.fixed_time_step > critical_step)
+    else // the saved step (no power iteration: the saved mode stays)
+    {
+      set_time_step(time_step);
+      critical_step = time_step / step_fraction();
+    }
+    const double stable_limit =
+        step_fraction() / ep.safety_factor * critical_step;
+    if (ep.fixed_time_step > stable_limit)
       throw InputError(
           "'Explicit dynamics/Fixed time step' (" +
           std::to_string(ep.fixed_time_step) +
           " s) exceeds the critical time step of this mesh and material (" +
-          std::to_string(critical_step) +
-          " s): the run would blow up. Fix: set it to 0 (the stable step) "
+          std::to_string(stable_limit) +
+          " s, with the stiffness damping): the run would blow up. Fix: set it "
+          "to 0 (the stable step) "
           "or below the critical step.");
     const auto  &limits  = this->solver_parameters.limits;
     const double n_steps = (time.end_time - integrator->time()) / time_step;
@@ -403,7 +440,13 @@ namespace softgrasp
     }
     this->pcout << "Explicit dynamics: critical step " << critical_step
                 << " s, step " << time_step << " s, added mass " << added_mass
-                << " %, about "
+                << " %,";
+    if (ep.stiffness_damping > 0)
+      this->pcout << " stiffness damping beta "
+                  << ep.stiffness_damping * time_step / step_fraction()
+                  << " s (xi = " << ep.stiffness_damping
+                  << " at the highest frequency),";
+    this->pcout << " about "
                 << std::lround((time.end_time - integrator->time()) / time_step)
                 << " steps." << std::endl;
 
@@ -461,7 +504,7 @@ namespace softgrasp
         {
           J_at_estimate = integrator->min_J();
           critical_step = integrator->critical_time_step(8);
-          time_step     = ep.safety_factor * critical_step;
+          set_time_step(step_fraction() * critical_step);
         }
       }
       ++this->state.step;

@@ -130,8 +130,10 @@ namespace softgrasp
               "' holds " + std::to_string(restored_fields.size()) +
               " field(s) besides the displacement, this solver needs " +
               std::to_string(n_restored_fields) +
-              ": it was written by the other time integrator. Fix: resume "
-              "with the 'Time/Integrator' of the run that wrote it.");
+              ": it was written by the other time integrator (or, for the "
+              "explicit one, with 'Explicit dynamics/Stiffness damping' "
+              "switched on or off). Fix: resume with the 'Time/Integrator' "
+              "and the stiffness damping of the run that wrote it.");
       }
       else
       {

@@ -10,13 +10,18 @@ namespace softgrasp
 {
   /**
    * Central-difference (explicit) time integration of
-   *   M a = f_ext - f_int(u) + f_c - alpha M v
+   *   M a = f_ext - f_int(u) - beta K v + f_c - alpha M v
    * with the diagonal mass M of compute_lumped_mass():
    *   v^{n+1/2} = v^{n-1/2} + h a^n,   u^{n+1} = u^n + dt v^{n+1/2},
    * h = (dt_{n-1} + dt_n)/2, started by v^{1/2} = v^0 + dt/2 a^0. Dofs in
    * the fixed set move as prescribed (their acceleration is not computed;
    * the internal force there is the reaction). alpha (1/s) is optional
-   * mass-proportional damping. Contact forces f_c enter as kinematic
+   * mass-proportional damping, beta (s) optional stiffness-proportional
+   * damping; K v is the rate of the internal forces over the step,
+   * (f_int(u^{n+1}) - f_int(u^n))/dt_n, applied with a^{n+1} as the mass
+   * damping is (both lag half a step; the stable step of a mode of
+   * frequency omega is then 2/omega (sqrt(1 + xi^2) - xi), with
+   * xi = beta omega/2). Contact forces f_c enter as kinematic
    * corrections of the predicted u^{n+1} (constrain, forward-increment
    * Lagrange multipliers): a correction du of a free dof is the force
    * M du / (dt h) at t^n.
@@ -63,7 +68,11 @@ namespace softgrasp
     CentralDifference(const InternalForceOperator<dim> &force,
                       const VectorType                 &mass,
                       const dealii::IndexSet           &fixed,
-                      const double                      mass_damping = 0);
+                      const double                      mass_damping      = 0,
+                      const double                      stiffness_damping = 0);
+
+    /// Stiffness-proportional damping beta (s) from the next step on.
+    void set_stiffness_damping(const double beta);
 
     /// Sets the displacement of the fixed dofs at time t (default: zero).
     std::function<void(const double t, VectorType &u)> prescribe;
@@ -126,11 +135,13 @@ namespace softgrasp
     std::vector<double> state_scalars() const;
     /**
      * Continue from a saved state: displacement @p u, half-step velocity
-     * @p v_half (velocity_half_step()) and state_scalars().
+     * @p v_half (velocity_half_step()), state_scalars() and, with
+     * stiffness damping, the @p damping_force of the saved step.
      */
     void restore(const VectorType          &u,
                  const VectorType          &v_half,
-                 const std::vector<double> &scalars);
+                 const std::vector<double> &scalars,
+                 const VectorType          *damping_force = nullptr);
     /// The power iteration's current estimate of the highest mode (saved
     /// with a checkpoint so that a restart continues identically).
     const VectorType &highest_mode() const;
@@ -143,6 +154,9 @@ namespace softgrasp
     const VectorType &velocity() const;
     /// Velocity at the last half step v^{n-1/2} (m/s).
     const VectorType &velocity_half_step() const;
+    /// The stiffness damping force beta K v at the current step (N; zero
+    /// without stiffness damping).
+    const VectorType &damping_force() const;
     /// Internal and external forces at the current step (N).
     const VectorType &internal_forces() const;
     const VectorType &external_forces_now() const;
@@ -152,7 +166,13 @@ namespace softgrasp
     double            min_J() const;
 
   private:
-    void acceleration(const double t, const VectorType &u, const VectorType &v);
+    /// a = M^-1 (f_ext - f_int(u) - f_damping) - alpha v at time t; with
+    /// @p rate_dt > 0 (the step just taken) f_damping is first updated to
+    /// beta (f_int(u) - f_int(u_prev)) / rate_dt.
+    void acceleration(const double      t,
+                      const VectorType &u,
+                      const VectorType &v,
+                      const double      rate_dt = 0);
     /// Keep u^n and v^{n-1/2}, then v^{n+1/2} = v^{n-1/2} + h a^n and
     /// u^{n+1} = u^n + dt v^{n+1/2}, in one pass over the vectors.
     void predict(const double dt, const double h);
@@ -173,6 +193,7 @@ namespace softgrasp
     const VectorType                 &mass;
     dealii::IndexSet                  fixed;
     double                            alpha;
+    double                            beta; ///< stiffness damping, s
     double                            balance_limit = 0; ///< 0: none
     double balance_from = 0; ///< s, time from which the limit acts
     /// Steps in a row that a growing created energy must stay above the
@@ -187,6 +208,8 @@ namespace softgrasp
     /// The state before the current step (kept for the rollback and the
     /// work over the step; swapped, not reallocated, each step).
     VectorType u_prev, v_half_prev, a_prev, f_prev, f_ext_prev;
+    /// The stiffness damping force beta K v at t^{n+1} and at t^n.
+    VectorType f_damping, f_damping_prev;
     /// Per locally owned dof (local order): 1 if free, 0 if fixed.
     std::vector<unsigned char> is_free;
     /// Local indices of the free dofs constrain() may change (empty: all)

@@ -60,6 +60,12 @@ namespace softgrasp
     /// Operator, lumped (and scaled) mass, fixed dofs, integrator.
     void setup_integrator();
     void scale_mass(const double target_step);
+    /// The time step over the critical step 2/omega_max: the safety factor
+    /// times the stable fraction with the stiffness damping.
+    double step_fraction() const;
+    /// Set the time step (s) and the stiffness damping beta that belongs
+    /// to it.
+    void set_time_step(const double dt);
     /// Dirichlet dofs with their support points and functions.
     void setup_prescribed();
     void prescribe(const double time, VectorType &u);

@@ -193,6 +193,9 @@ namespace softgrasp
     double mass_scaling_time_step = 0;
     /// mass-proportional damping alpha, 1/s
     double mass_damping = 0;
+    /// stiffness-proportional damping: the fraction xi of critical damping
+    /// at the highest frequency (beta = xi x the critical step); 1
+    double stiffness_damping = 0;
     /// stop when the relative energy balance error exceeds this; 1
     double energy_balance_limit = 0.05;
     /// internal forces by the vectorised kernel (true) or the reference
