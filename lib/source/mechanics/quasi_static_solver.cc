@@ -184,6 +184,14 @@ namespace softgrasp
                      "check the loads and boundary conditions, or use the "
                      "'mixed u-p-J' formulation for nearly incompressible "
                      "materials.";
+          if (mortar && !dynamic() &&
+              this->contact_parameters.friction_coefficient > 0)
+            message << " With friction, a step that fails at every size "
+                       "while contact nodes flip between stick and slip is "
+                       "a frictional snap: the quasi-static path has no "
+                       "continuation there (doc/contact.md). Fix: 'Time/"
+                       "Integrator = implicit dynamic', whose inertia "
+                       "carries the snap.";
           throw SolverFailure(message.str());
         }
         dt /= 2;
