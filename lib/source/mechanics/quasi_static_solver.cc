@@ -175,10 +175,13 @@ namespace softgrasp
           write_state();
           std::ostringstream message;
           message << report << "\nThe step was cut back " << cut_backs - 1
-                  << " time(s) down to dt = " << dt
-                  << " s without success. The last converged state (step "
-                  << state.step << ", t = " << state.time
-                  << " s) was written to '"
+                  << " time(s) down to dt = " << dt << " s without success";
+          if (cut_backs <= time.max_cut_backs)
+            message << " (another cut-back would go below 'Time/Minimum "
+                       "time step' = "
+                    << phase.minimum << " s; a smaller one allows more)";
+          message << ". The last converged state (step " << state.step
+                  << ", t = " << state.time << " s) was written to '"
                   << solver_parameters.output.directory
                   << "' (VTU and checkpoint). Fix: reduce 'Time/Time step', "
                      "check the loads and boundary conditions, or use the "
