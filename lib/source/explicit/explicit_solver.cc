@@ -412,8 +412,12 @@ namespace softgrasp
       set_time_step(time_step);
       critical_step = time_step / step_fraction();
     }
+    // the damped stable step with the beta this run uses (with a fixed
+    // step, beta need not be xi times the mesh's critical step)
+    const double beta   = ep.stiffness_damping * time_step / step_fraction();
+    const double xi_max = beta / critical_step;
     const double stable_limit =
-        step_fraction() / ep.safety_factor * critical_step;
+        critical_step * (std::sqrt(1 + xi_max * xi_max) - xi_max);
     if (ep.fixed_time_step > stable_limit)
       throw InputError(
           "'Explicit dynamics/Fixed time step' (" +
@@ -421,8 +425,7 @@ namespace softgrasp
           " s) exceeds the critical time step of this mesh and material (" +
           std::to_string(stable_limit) +
           " s, with the stiffness damping): the run would blow up. Fix: set it "
-          "to 0 (the stable step) "
-          "or below the critical step.");
+          "to 0 (the stable step) or below the critical step.");
     const auto  &limits  = this->solver_parameters.limits;
     const double n_steps = (time.end_time - integrator->time()) / time_step;
     if (limits.check_size && n_steps > limits.maximum_explicit_steps)
@@ -442,9 +445,7 @@ namespace softgrasp
                 << " s, step " << time_step << " s, added mass " << added_mass
                 << " %,";
     if (ep.stiffness_damping > 0)
-      this->pcout << " stiffness damping beta "
-                  << ep.stiffness_damping * time_step / step_fraction()
-                  << " s (xi = " << ep.stiffness_damping
+      this->pcout << " stiffness damping beta " << beta << " s (xi = " << xi_max
                   << " at the highest frequency),";
     this->pcout << " about "
                 << std::lround((time.end_time - integrator->time()) / time_step)
