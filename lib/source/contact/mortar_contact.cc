@@ -1,4 +1,5 @@
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector_operation.h>
@@ -102,9 +103,37 @@ namespace softgrasp
       for (unsigned int c = 0; c < dim; ++c)
         node.last_converged[c] += u[node.dofs[c]];
     }
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const bool closed    = node_list[j].status != ContactStatus::inactive;
+      law[j].pair_body     = closed ? node_list[j].body : -1;
+      law[j].pair_geom     = node_list[j].geom;
+      law[j].pair_switches = 0;
+    }
     converged_time = time;
     place_bodies(time, poses_converged);
     step_changes = 0;
+  }
+
+  template <int dim>
+  typename MortarContact<dim>::Proximity
+  MortarContact<dim>::pair(const unsigned int j, const Eigen::Vector3d &x)
+  {
+    NodeLaw        &rule         = law[j];
+    const Proximity nearest_geom = this->nearest(x);
+    if (rule.pair_body < 0 || nearest_geom.body < 0 ||
+        (nearest_geom.body == rule.pair_body &&
+         nearest_geom.geom == rule.pair_geom))
+      return nearest_geom;
+    const Proximity kept = this->distance_to(rule.pair_body, rule.pair_geom, x);
+    const double    size =
+        std::pow(node_list[j].reference_area, 1.0 / (dim - 1.0));
+    if (rule.pair_switches >= 2 || nearest_geom.gap > kept.gap - 0.01 * size)
+      return kept;
+    ++rule.pair_switches;
+    rule.pair_body = nearest_geom.body;
+    rule.pair_geom = nearest_geom.geom;
+    return nearest_geom;
   }
 
   template <int dim>
@@ -141,7 +170,8 @@ namespace softgrasp
     coefficients = 0;
     values       = 0;
 
-    unsigned int active = 0, slipping = 0, changes = 0, unsymmetric = 0;
+    unsigned int active = 0, slipping = 0, changes = 0, unsymmetric = 0,
+                 switches = 0;
     for (unsigned int j = 0; j < node_list.size(); ++j)
     {
       Node           &node = node_list[j];
@@ -156,7 +186,7 @@ namespace softgrasp
           f[c] = f_int[node.dofs[c]] - f_ext[node.dofs[c]];
       }
       const ContactStatus before = node.status;
-      const Proximity     p      = nearest(x);
+      const Proximity     p      = pair(j, x);
       NodalContactInput   input;
       input.f   = f;
       input.mu  = parameters.friction_coefficient;
@@ -179,7 +209,16 @@ namespace softgrasp
       else
         input.gap = std::numeric_limits<double>::max();
       const NodalContactLinearization lin = evaluate_nodal_contact(input);
+      if (lin.status != ContactStatus::inactive &&
+          before != ContactStatus::inactive &&
+          (p.body != node.body || p.geom != node.geom))
+        ++switches;
 
+      if (lin.status != ContactStatus::inactive && rule.pair_body < 0)
+      {
+        rule.pair_body = p.body;
+        rule.pair_geom = p.geom;
+      }
       node.status = lin.status;
       node.body   = p.body;
       node.geom   = p.geom;
@@ -244,6 +283,7 @@ namespace softgrasp
     active_count            = Utilities::MPI::sum(active, comm);
     slip_count              = Utilities::MPI::sum(slipping, comm);
     change_count            = Utilities::MPI::sum(changes, comm);
+    switch_count            = Utilities::MPI::sum(switches, comm);
     step_changes += change_count;
   }
 
@@ -445,7 +485,31 @@ namespace softgrasp
     std::ostringstream out;
     out << "contact " << active_count << " active (" << slip_count << " slip), "
         << change_count << " changes";
+    if (switch_count > 0)
+      out << ", " << switch_count << " closed nodes changed geom";
     return out.str();
+  }
+
+  template <int dim>
+  std::string
+  MortarContact<dim>::describe_node(const types::global_dof_index dof) const
+  {
+    for (const Node &node : node_list)
+    {
+      if (std::find(node.dofs.begin(), node.dofs.end(), dof) == node.dofs.end())
+        continue;
+      const char        *status[] = {"open", "sticking", "sliding"};
+      std::ostringstream out;
+      out << "a contact node, " << status[static_cast<int>(node.status)];
+      if (node.body >= 0)
+        out << ", nearest geom "
+            << this->bodies.geom_label(node.body, node.geom) << " at gap "
+            << node.gap << " m";
+      out << ", normal (" << node.normal.transpose() << "), force ("
+          << node.force.transpose() << ") N";
+      return out.str();
+    }
+    return "";
   }
 
   template <int dim> unsigned int MortarContact<dim>::n_changes() const

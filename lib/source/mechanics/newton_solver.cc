@@ -82,8 +82,9 @@ namespace softgrasp
       {
         log << std::endl;
         result.iterations = it;
-        result.failure =
-            "no convergence in " + std::to_string(it) + " Newton iterations";
+        result.failure    = "no convergence in " + std::to_string(it) +
+                         " Newton iterations (" +
+                         system.describe_largest_residual() + ")";
         return result;
       }
 

@@ -68,6 +68,8 @@ namespace softgrasp
                         dealii::TrilinosWrappers::MPI::Vector   &rhs) const override;
     bool symmetric() const override;
     std::string iteration_report() const override;
+    std::string
+    describe_node(const dealii::types::global_dof_index dof) const override;
 
     /**
      * Implicit dynamics: add each node's inertia stiffness m_j/dt^2 to its
@@ -108,6 +110,11 @@ namespace softgrasp
       Eigen::Vector3d phi = Eigen::Vector3d::Zero();
       Eigen::Matrix3d A   = Eigen::Matrix3d::Identity();
       Eigen::Matrix3d B   = Eigen::Matrix3d::Zero();
+      /// The geom the node is closed against in this load step (-1: none),
+      /// and how often it changed geom in the step (see pair()).
+      int          pair_body     = -1;
+      unsigned int pair_geom     = 0;
+      unsigned int pair_switches = 0;
     };
 
     /// How a closed node's equations enter the linear solve (the value of
@@ -119,6 +126,16 @@ namespace softgrasp
       normal_line = 2, ///< one constraint w . du = beta, rows by A
       fixed       = 3  ///< every free component prescribed (A = 0)
     };
+
+    /**
+     * The geom node @p j is held against at @p x: the nearest one, except
+     * that a node closed in this load step keeps its geom unless it lies
+     * deeper in another by more than 1 % of its size, at most twice per
+     * step. In a crease between two geoms (a finger's links at their
+     * joint) the nearest geom alternates between the two as Newton moves
+     * the node, and the active set would cycle without end.
+     */
+    Proximity pair(const unsigned int j, const Eigen::Vector3d &x);
 
     Eigen::Matrix3d normal_gradient(const Proximity       &p,
                                     const Eigen::Vector3d &x) const;
@@ -158,6 +175,8 @@ namespace softgrasp
     unsigned int unsymmetric_count = 0; ///< nodes sliding with friction etc.
     dealii::TrilinosWrappers::MPI::Vector owned_scratch;
     unsigned int                          change_count = 0, step_changes = 0;
+    /// Closed nodes whose nearest geom changed at the last evaluation.
+    unsigned int switch_count = 0;
   };
 } // namespace softgrasp
 

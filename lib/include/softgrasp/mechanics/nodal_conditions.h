@@ -76,6 +76,15 @@ namespace softgrasp
 
     /// One line for the Newton log (e.g. active-set sizes and changes).
     virtual std::string iteration_report() const = 0;
+
+    /// The state of the node that owns @p dof, if this rank governs it
+    /// (e.g. "contact node, slip on body/geom, gap ..."); "" otherwise.
+    virtual std::string
+    describe_node(const dealii::types::global_dof_index dof) const
+    {
+      (void)dof;
+      return "";
+    }
   };
 } // namespace softgrasp
 

@@ -126,6 +126,14 @@ namespace softgrasp
     /// The nodal conditions' line for the Newton log ("" without them).
     std::string nodal_conditions_report() const;
 
+    /**
+     * Where the residual of the last assembly is largest: its value (N),
+     * the equation (component) and the reference position (m) of its node,
+     * and what the nodal conditions say about that node. For the message
+     * of a Newton solve that does not converge. Collective.
+     */
+    std::string describe_largest_residual() const;
+
     /// f_int and f_ext (N) of the last assembly (owned entries valid).
     const dealii::TrilinosWrappers::MPI::Vector &internal_forces() const;
     const dealii::TrilinosWrappers::MPI::Vector &external_forces() const;
