@@ -519,7 +519,8 @@ namespace softgrasp
       if ((vtu > 0 && this->state.step % vtu == 0) || last)
         this->write_fields(t_record);
       const unsigned int every = this->solver_parameters.checkpoint.interval;
-      if (every > 0 && this->state.step % every == 0)
+      // A run stopped by its criterion can be continued (or branched from).
+      if ((every > 0 && this->state.step % every == 0) || this->stopped)
         save_checkpoint();
       print_progress(t_record, time_step);
       if (this->stopped)

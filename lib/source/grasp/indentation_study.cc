@@ -126,6 +126,45 @@ namespace softgrasp
     }
   } // namespace
 
+  SolverInputs<3> IndentationStudy::inputs_for(const KinematicsData &cut) const
+  {
+    SolverInputs<3> inputs             = solver_inputs;
+    inputs.solver.time.end_time        = cut.time.back() - cut.time.front();
+    inputs.bodies                      = rigid_bodies_from(cut);
+    const KinematicsData::Body *object = nullptr;
+    for (const auto &body : cut.bodies)
+      if (body.name == parameters.object_body)
+        object = &body;
+    if (object == nullptr)
+      throw InputError("'Indentation study/Object body' = '" +
+                       parameters.object_body +
+                       "' is not a body of the kinematics file. Fix: name "
+                       "the grasped object's body.");
+    set_up_tissue(inputs, object->poses.front());
+    inputs.add_resume_setting("Study/Placement",
+                              describe(inputs.mesh.placement));
+    return inputs;
+  }
+
+  std::pair<unsigned int, unsigned int>
+  IndentationStudy::link_index(const RigidBodySet &bodies,
+                               const std::string  &label,
+                               const std::string  &entry)
+  {
+    std::vector<std::string> labels;
+    for (unsigned int b = 0; b < bodies.bodies().size(); ++b)
+      for (unsigned int g = 0; g < bodies.bodies()[b].geoms().size(); ++g)
+      {
+        if (bodies.geom_label(b, g) == label)
+          return {b, g};
+        labels.push_back(bodies.geom_label(b, g));
+      }
+    throw InputError("'" + entry + "' = '" + label +
+                     "' is not a link of the kinematics file. Fix: use one "
+                     "of: " +
+                     join(labels) + ".");
+  }
+
   void IndentationStudy::run(const KinematicsData &kinematics)
   {
     const auto &first = kinematics.phase(parameters.phases.front());
@@ -139,47 +178,20 @@ namespace softgrasp
         extra_angle = p.amount;
 
     // The study's typed settings of the solver.
-    SolverInputs<3> inputs             = solver_inputs;
-    inputs.solver.time.end_time        = last.end_time - first.start_time;
-    inputs.bodies                      = rigid_bodies_from(cut);
-    const KinematicsData::Body *object = nullptr;
-    for (const auto &body : cut.bodies)
-      if (body.name == parameters.object_body)
-        object = &body;
-    if (object == nullptr)
-      throw InputError("'Indentation study/Object body' = '" +
-                       parameters.object_body +
-                       "' is not a body of the kinematics file. Fix: name "
-                       "the grasped object's body.");
-    set_up_tissue(inputs, object->poses.front());
+    SolverInputs<3> inputs      = inputs_for(cut);
+    inputs.solver.time.end_time = last.end_time - first.start_time;
     inputs.add_resume_setting("Study/Phases", join(parameters.phases));
-    inputs.add_resume_setting("Study/Placement",
-                              describe(inputs.mesh.placement));
-
-    // The target link as (body, geom) indices into the force records.
-    std::vector<std::string>                   labels;
-    std::vector<std::pair<unsigned, unsigned>> indices;
-    const auto                                &bodies = inputs.bodies;
-    for (unsigned int b = 0; b < bodies.bodies().size(); ++b)
-      for (unsigned int g = 0; g < bodies.bodies()[b].geoms().size(); ++g)
-      {
-        labels.push_back(bodies.geom_label(b, g));
-        indices.emplace_back(b, g);
-      }
-    const auto target =
-        std::find(labels.begin(), labels.end(), parameters.target_link);
-    if (!parameters.target_link.empty() && target == labels.end())
-      throw InputError("'Indentation study/Target link' = '" +
-                       parameters.target_link +
-                       "' is not a link of the kinematics file. Fix: use one "
-                       "of: " +
-                       join(labels) + ".");
+    std::pair<unsigned int, unsigned int> target;
+    if (!parameters.target_link.empty())
+      target = link_index(inputs.bodies,
+                          parameters.target_link,
+                          "Indentation study/Target link");
 
     const auto solver_pointer = MechanicsSolver<3>::create(comm, inputs);
     auto      &solver         = *solver_pointer;
     if (parameters.target_force > 0)
     {
-      const auto [b, g] = indices[target - labels.begin()];
+      const auto [b, g] = target;
       solver.set_stop_criterion(
           [&solver, b = b, g = g, this]()
           {

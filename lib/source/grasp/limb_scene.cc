@@ -21,6 +21,13 @@ namespace softgrasp
                       Patterns::Double(0),
                       "Mean density of the rigid arm (its mass under "
                       "gravity). Unit: kg/m^3.");
+    prm.declare_entry("Shoulder",
+                      "ball joint",
+                      Patterns::Selection("ball joint|fixed"),
+                      "ball joint: the arm hangs from the shoulder on a "
+                      "damped ball joint (it gives way to the grasp); "
+                      "fixed: the arm is held where it is, as the finite "
+                      "element humerus is (for a pull along the arm).");
     prm.declare_entry("Shoulder damping",
                       "20",
                       Patterns::Double(0),
@@ -48,6 +55,7 @@ namespace softgrasp
     shoulder_damping   = section.get_positive("Shoulder damping", "N m s/rad");
     shoulder_stiffness = section.get_positive("Shoulder stiffness", "N m/rad");
     facets             = prm.get_integer("Facets");
+    shoulder_joint     = prm.get("Shoulder") == "ball joint";
     prm.leave_subsection();
   }
 
@@ -134,11 +142,13 @@ namespace softgrasp
         << "  <asset>\n    <mesh name=\"upper_arm_skin\" "
            "file=\"mujoco_arm_skin.stl\"/>\n  </asset>\n"
         << "  <worldbody>\n"
-        << "    <body name=\"object\" pos=\"0 " << -limb.length / 2 << " 0\">\n"
-        << "      <joint name=\"shoulder\" type=\"ball\" damping=\""
-        << shoulder_damping << "\" stiffness=\"" << shoulder_stiffness
-        << "\"/>\n"
-        << "      <geom name=\"upper_arm\" type=\"mesh\" "
+        << "    <body name=\"object\" pos=\"0 " << -limb.length / 2
+        << " 0\">\n";
+    if (shoulder_joint)
+      xml << "      <joint name=\"shoulder\" type=\"ball\" damping=\""
+          << shoulder_damping << "\" stiffness=\"" << shoulder_stiffness
+          << "\"/>\n";
+    xml << "      <geom name=\"upper_arm\" type=\"mesh\" "
            "mesh=\"upper_arm_skin\" mass=\""
         << density * volume
         << "\" condim=\"3\" friction=\"1 0.005 0.0001\" solref=\"0.004 1\" "

@@ -214,7 +214,8 @@ namespace softgrasp
       if ((vtu > 0 && state.step % vtu == 0) || last)
         this->write_fields(state.time);
       const unsigned int every = solver_parameters.checkpoint.interval;
-      if (every > 0 && state.step % every == 0)
+      // A run stopped by its criterion can be continued (or branched from).
+      if ((every > 0 && state.step % every == 0) || this->stopped)
         write_state();
 
       pcout << "Step " << std::setw(4) << state.step

@@ -90,6 +90,14 @@ namespace softgrasp
                           Patterns::Double(0),
                           "Closure beyond the equilibrium state added to "
                           "every finger joint. Unit: rad.");
+        prm.declare_entry("Joint weights",
+                          "",
+                          Patterns::List(Patterns::Double(0)),
+                          "Per finger joint (in the order of 'Finger "
+                          "joints'), the fraction of the extra joint angle "
+                          "it closes, e.g. 1, 0, 1, 0, 1, 0 to close the "
+                          "proximal joints only; empty: 1 for every joint. "
+                          "Unit: 1.");
         prm.declare_entry("Samples",
                           "10",
                           Patterns::Integer(1),
@@ -176,6 +184,18 @@ namespace softgrasp
       const CheckedSection s(prm, "Rigid environment/Indentation");
       indentation.extra_angle = s.get_positive("Extra joint angle", "rad");
       indentation.samples     = prm.get_integer("Samples");
+      indentation.joint_weights.clear();
+      for (const auto &w :
+           Utilities::split_string_list(prm.get("Joint weights")))
+        indentation.joint_weights.push_back(Utilities::string_to_double(w));
+      if (!indentation.joint_weights.empty() &&
+          indentation.joint_weights.size() != finger_joints.size())
+        throw InputError(
+            "'Rigid environment/Indentation/Joint weights' has " +
+            std::to_string(indentation.joint_weights.size()) + " values for " +
+            std::to_string(finger_joints.size()) +
+            " finger joints. Fix: give one weight per joint of 'Finger "
+            "joints', or none.");
       indentation.duration    = s.get_positive("Duration", "s");
       indentation.settle_time = s.get_positive("Settle time", "s");
     }

@@ -96,6 +96,14 @@ namespace softgrasp
   {
     if (fk_data)
       mj_deleteData(fk_data);
+    if (equilibrium_data)
+      mj_deleteData(equilibrium_data);
+  }
+
+  double GraspSimulation::weight(const std::size_t k) const
+  {
+    const auto &w = parameters.indentation.joint_weights;
+    return w.empty() ? 1.0 : w[k];
   }
 
   const MujocoModel &GraspSimulation::model() const
@@ -405,6 +413,9 @@ namespace softgrasp
     data.equilibrium_time = d->time;
     data.phases.push_back({"closing", 0, d->time, 0});
     equilibrium_qpos.assign(d->qpos, d->qpos + m->nq);
+    if (equilibrium_data == nullptr)
+      equilibrium_data = mujoco.make_data();
+    mj_copyData(equilibrium_data, m, d);
     for (const int a : finger_actuators)
       equilibrium_targets.push_back(d->ctrl[a]);
     const auto forces = link_contact_forces(m, d, object_body, link_geoms);
@@ -444,17 +455,21 @@ namespace softgrasp
     const double   start = data.equilibrium_time;
     const double   slide0 =
         slide_joint >= 0 ? equilibrium_qpos[m->jnt_qposadr[slide_joint]] : 0;
-    log << "MuJoCo: indentation, " << ind.extra_angle << " rad more on every "
-        << "finger joint in " << ind.samples << " samples\n";
+    log << "MuJoCo: indentation, " << ind.extra_angle << " rad more on "
+        << (ind.joint_weights.empty() ? "every finger joint"
+                                      : "the finger joints (times their "
+                                        "weights)")
+        << " in " << ind.samples << " samples\n";
     for (unsigned int s = 1; s <= ind.samples; ++s)
     {
       const double        closure = ind.extra_angle * s / ind.samples;
       std::vector<double> angles;
       for (std::size_t k = 0; k < finger_joints.size(); ++k)
       {
-        set_target(finger_joints[k], equilibrium_targets[k] + closure);
+        set_target(finger_joints[k],
+                   equilibrium_targets[k] + weight(k) * closure);
         angles.push_back(equilibrium_qpos[m->jnt_qposadr[finger_joints[k]]] +
-                         closure);
+                         weight(k) * closure);
       }
       const bool settled = settle(ind.settle_time, false);
       forward_kinematics(angles, slide0);
@@ -475,9 +490,9 @@ namespace softgrasp
     const double        start  = data.time.back();
     const double        slide0 = equilibrium_qpos[m->jnt_qposadr[slide_joint]];
     std::vector<double> angles;
-    for (const int j : finger_joints)
-      angles.push_back(equilibrium_qpos[m->jnt_qposadr[j]] +
-                       parameters.indentation.extra_angle);
+    for (std::size_t k = 0; k < finger_joints.size(); ++k)
+      angles.push_back(equilibrium_qpos[m->jnt_qposadr[finger_joints[k]]] +
+                       weight(k) * parameters.indentation.extra_angle);
     log << "MuJoCo: pull of " << p.distance << " m in " << p.duration << " s\n";
     const double t0 = d->time;
     for (unsigned int s = 1; s <= p.samples; ++s)

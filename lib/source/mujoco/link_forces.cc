@@ -1,3 +1,5 @@
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <softgrasp/mujoco/link_forces.h>
 
 namespace softgrasp
@@ -45,5 +47,57 @@ namespace softgrasp
       if (r.normal_force.norm() > 0)
         r.normal = r.normal_force.normalized();
     return result;
+  }
+
+  namespace
+  {
+    /// Velocity (world) of the point @p p fixed to body @p b.
+    Eigen::Vector3d point_velocity(const mjModel         *m,
+                                   const mjData          *d,
+                                   const int              b,
+                                   const Eigen::Vector3d &p)
+    {
+      mjtNum v[6]; // rotation, then translation at the body's centre of mass
+      mj_objectVelocity(m, d, mjOBJ_BODY, b, v, 0);
+      const Eigen::Vector3d omega(v[0], v[1], v[2]), linear(v[3], v[4], v[5]);
+      const Eigen::Vector3d centre(
+          d->xipos[3 * b], d->xipos[3 * b + 1], d->xipos[3 * b + 2]);
+      return linear + omega.cross(p - centre);
+    }
+  } // namespace
+
+  std::vector<double> link_slip_speeds(const mjModel          *m,
+                                       const mjData           *d,
+                                       const int               object_body,
+                                       const std::vector<int> &geoms)
+  {
+    std::vector<double> speed(geoms.size(), 0), weight(geoms.size(), 0);
+    for (int c = 0; c < d->ncon; ++c)
+    {
+      const mjContact &contact = d->contact[c];
+      const bool       object1 = m->geom_bodyid[contact.geom1] == object_body;
+      const bool       object2 = m->geom_bodyid[contact.geom2] == object_body;
+      if (object1 == object2)
+        continue;
+      const int  link = object1 ? contact.geom2 : contact.geom1;
+      const auto it   = std::find(geoms.begin(), geoms.end(), link);
+      if (it == geoms.end())
+        continue;
+      mjtNum local[6];
+      mj_contactForce(m, d, c, local);
+      const Eigen::Vector3d p(contact.pos[0], contact.pos[1], contact.pos[2]);
+      const Eigen::Vector3d n(
+          contact.frame[0], contact.frame[1], contact.frame[2]);
+      const Eigen::Vector3d relative =
+          point_velocity(m, d, m->geom_bodyid[link], p) -
+          point_velocity(m, d, object_body, p);
+      const double w = std::abs(local[0]);
+      const auto   i = it - geoms.begin();
+      speed[i] += w * (relative - n * n.dot(relative)).norm();
+      weight[i] += w;
+    }
+    for (std::size_t i = 0; i < geoms.size(); ++i)
+      speed[i] = weight[i] > 0 ? speed[i] / weight[i] : 0;
+    return speed;
   }
 } // namespace softgrasp

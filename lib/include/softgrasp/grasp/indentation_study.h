@@ -133,6 +133,21 @@ namespace softgrasp
     virtual void set_up_tissue(SolverInputs<3> &inputs,
                                const Pose      &object) const;
 
+    /**
+     * The typed solver inputs of a run over the recorded samples @p cut
+     * (time 0 = its first sample): the rigid bodies moving on them, the
+     * end time, the tissue placed at the object body's first pose, and the
+     * placement as a resume setting.
+     */
+    SolverInputs<3> inputs_for(const KinematicsData &cut) const;
+
+    /// The (body, geom) indices of link @p label ("body/geom") in
+    /// @p bodies; an InputError naming the entry @p entry and the links.
+    static std::pair<unsigned int, unsigned int>
+    link_index(const RigidBodySet &bodies,
+               const std::string  &label,
+               const std::string  &entry);
+
     /// Place the tissue: the mesh and the materials' fibre direction
     /// fields, both given in the tissue's own frame.
     static void place_tissue(SolverInputs<3>    &inputs,

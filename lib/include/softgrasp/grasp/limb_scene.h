@@ -25,10 +25,13 @@ namespace softgrasp
    */
   struct LimbScene
   {
-    double       density            = 1050; ///< of the whole arm, kg/m^3
-    double       shoulder_damping   = 20;   ///< N m s/rad
-    double       shoulder_stiffness = 50;   ///< N m/rad
-    unsigned int facets             = 96;   ///< around the skin surface
+    double density            = 1050; ///< of the whole arm, kg/m^3
+    double shoulder_damping   = 20;   ///< N m s/rad
+    double shoulder_stiffness = 50;   ///< N m/rad
+    /// false: the arm is held fixed (no shoulder joint), as the finite
+    /// element humerus is, e.g. for a pull along the arm.
+    bool         shoulder_joint = true;
+    unsigned int facets         = 96; ///< around the skin surface
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

@@ -90,7 +90,8 @@ namespace softgrasp
     /**
      * Stop the run after the first recorded step at which @p criterion
      * (called on all ranks, after the step's history is recorded) returns
-     * true, e.g. a target force on a finger link; the state is written.
+     * true, e.g. a target force on a finger link; the state is written
+     * (VTU and checkpoint, so that the run can be resumed from there).
      */
     void set_stop_criterion(std::function<bool()> criterion);
     /// True if the last run() ended by the stop criterion.

@@ -37,10 +37,13 @@ namespace softgrasp
 
     struct Indentation
     {
-      double       extra_angle = 0.2; ///< rad added to every finger joint
-      unsigned int samples     = 10;  ///< steps of the closure
-      double       duration    = 1;   ///< s, pseudo-time of the phase
-      double       settle_time = 1;   ///< s of MuJoCo time per sample, max
+      double extra_angle = 0.2; ///< rad added to every finger joint
+      /// Per finger joint, the fraction of extra_angle it closes (1 each
+      /// if empty); also how the grip levels raise the actuator targets.
+      std::vector<double> joint_weights;
+      unsigned int        samples     = 10; ///< steps of the closure
+      double              duration    = 1;  ///< s, pseudo-time of the phase
+      double              settle_time = 1; ///< s of MuJoCo time per sample, max
     } indentation;
 
     struct Pull

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <softgrasp/io/kinematics_file.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
+#include <softgrasp/mujoco/grip_levels.h>
 #include <softgrasp/mujoco/link_forces.h>
 #include <softgrasp/mujoco/mujoco_model.h>
 
@@ -23,9 +24,9 @@ namespace softgrasp
    *     joint is at rest and the link forces have settled. Recorded from
    *     MuJoCo's state (simulated time).
    *  2. "indentation": the finger joints are closed further, by
-   *     extra_angle * k/samples. The recorded poses are MuJoCo's forward
-   *     kinematics of the equilibrium angles plus that closure with the
-   *     object where it was (what the finite element solver drives); the
+   *     extra_angle * k/samples (times each joint's weight). The recorded poses
+   * are MuJoCo's forward kinematics of the equilibrium angles plus that closure
+   * with the object where it was (what the finite element solver drives); the
    *     recorded forces are MuJoCo's own, settled at the same actuator
    *     targets (the rigid model's answer to the same command).
    *  3. "pull" (if a distance is set): the base moves along the slide
@@ -44,6 +45,18 @@ namespace softgrasp
 
     const MujocoModel &model() const;
 
+    /**
+     * After run(): the grasp-and-pull at each grip level of @p settings,
+     * each from the equilibrium state. A level's closure c (added to every
+     * finger joint's actuator target, times the joint's weight) is found by
+     * regula falsi on the settled normal force of the grip link (MuJoCo's own
+     * answer to the command); then, holding those targets, the slide actuator's
+     * target moves the pull distance at the pull speed, recording every link's
+     * forces and slip speed and where the base is. Levels above what the hand
+     * can reach within the maximum closure come back with matched = false.
+     */
+    std::vector<RigidGripLevel> grip_levels(const GripLevelSettings &settings);
+
   private:
     void place_base();
     void close_to_equilibrium();
@@ -56,8 +69,18 @@ namespace softgrasp
     std::string              fastest_joint() const;
     std::vector<std::string> missing_links() const;
     void                     set_target(const int joint, const double value);
+    /// The share of a closure that finger joint @p k takes (Joint weights).
+    double weight(const std::size_t k) const;
     /// Append a sample: poses from @p pose_data, forces from the simulation.
     void record(const double time, const mjData *pose_data);
+    /// The grip link's normal force (N) after settle_time at closure c
+    /// from the equilibrium state, averaged over the last settle window.
+    double grip_force_at(const double             closure,
+                         const int                grip_geom,
+                         const GripLevelSettings &settings);
+    /// The pull of one level, from the state grip_force_at() left.
+    void pull_at_level(const GripLevelSettings &settings,
+                       RigidGripLevel          &level);
     /// Forward kinematics of the equilibrium with joint angles changed.
     void forward_kinematics(const std::vector<double> &finger_angles,
                             const double               slide);
@@ -65,7 +88,8 @@ namespace softgrasp
     const GraspParameters parameters;
     std::ostream         &log;
     MujocoModel           mujoco;
-    mjData               *fk_data = nullptr;
+    mjData               *fk_data          = nullptr;
+    mjData               *equilibrium_data = nullptr; ///< state at equilibrium
     int                   object_body, base_body, slide_joint = -1;
     std::vector<int>      finger_joints, finger_actuators, link_geoms;
     /// The joints in the file (fingers, then the slide joint) and their

@@ -38,6 +38,18 @@ namespace softgrasp
                       const mjData           *d,
                       const int               object_body,
                       const std::vector<int> &geoms);
+
+  /**
+   * For each geom of @p geoms: the mean speed (m/s) of its contact points
+   * with body @p object_body relative to that body, tangential to each
+   * contact, weighted by the contacts' normal forces (0 without contact).
+   * A sliding link has the speed of the slide; a sticking one nearly 0.
+   * Needs mj_forward() (or mj_step()) to have run.
+   */
+  std::vector<double> link_slip_speeds(const mjModel          *m,
+                                       const mjData           *d,
+                                       const int               object_body,
+                                       const std::vector<int> &geoms);
 } // namespace softgrasp
 
 #endif

@@ -1,0 +1,81 @@
+#ifndef softgrasp_grasp_pull_sweep_study_h
+#define softgrasp_grasp_pull_sweep_study_h
+
+#include <softgrasp/grasp/arm_grasp_study.h>
+#include <softgrasp/grasp/link_force_history.h>
+#include <string>
+#include <vector>
+
+namespace softgrasp
+{
+  /// One grip level of the finite element arm.
+  struct FeGripLevel
+  {
+    double      target_force  = 0;     ///< N on the grip link
+    double      reached_force = 0;     ///< N at the first record at or above it
+    double      time          = 0;     ///< s of the indentation phase there
+    bool        reached       = false; ///< false: the closure ended below it
+    bool        pulled        = false; ///< the pull ran to its end
+    std::string failure;               ///< why the pull stopped, if it did
+    /// Every link's forces over the pull (time from the level's start).
+    std::vector<LinkForceHistory> links;
+  };
+
+  /**
+   * The finite element half of the grasp-and-pull sweep on the arm (the
+   * source paper's second case study), on the arm grasp's tissue and
+   * solver settings:
+   *
+   *  - close_to_levels(): one run along the recorded indentation phase
+   *    (directory <output>/fe_closing) stops at the first record where the
+   *    grip link's normal force reaches each level's force; its checkpoint
+   *    there is copied to <output>/level_<k>/checkpoint, and the run goes
+   *    on to the next level from it. A killed sweep resumes from the
+   *    closing checkpoint; levels already reached are not closed again.
+   *  - pull(k): from level k's checkpoint (directory <output>/level_<k>),
+   *    every link moves on the recorded pull phase's motion, relative to
+   *    where the pull started, applied to the link's pose at the level
+   *    (the finger joints hold the level's closure; the base slides); the
+   *    humerus stays fixed.
+   */
+  class PullSweepStudy : public ArmGraspStudy
+  {
+  public:
+    PullSweepStudy(MPI_Comm comm, dealii::ParameterHandler &prm);
+
+    /**
+     * Close along the 'indentation' phase of @p kinematics until the
+     * normal force on @p grip_link (body/geom) reaches each of @p forces
+     * (N, increasing). Returns one FeGripLevel per force.
+     */
+    std::vector<FeGripLevel> close_to_levels(const KinematicsData &kinematics,
+                                             const std::string    &grip_link,
+                                             const std::vector<double> &forces);
+
+    /// The pull of @p level (1-based number @p k), which close_to_levels()
+    /// reached; fills its links, pulled and failure.
+    void pull(const KinematicsData &kinematics,
+              const unsigned int    k,
+              FeGripLevel          &level);
+
+    /// <output>/level_<k> (k 1-based, two digits).
+    std::string level_directory(const unsigned int k) const;
+
+  private:
+    std::string output; ///< the study's 'Output/Directory'
+  };
+
+  /**
+   * The kinematics of a pull from the state at time @p t (s, relative to
+   * the start of @p closing): @p closing's samples up to @p t (and one at
+   * @p t), then every body moved by its motion in @p pull relative to the
+   * pull's first sample, applied to its pose at @p t. Both inputs are
+   * slices (time from 0); so is the result, and it has the phases
+   * "indentation" (0 to t) and "pull".
+   */
+  KinematicsData pull_from(const KinematicsData &closing,
+                           const KinematicsData &pull,
+                           const double          t);
+} // namespace softgrasp
+
+#endif

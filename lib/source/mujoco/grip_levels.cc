@@ -1,0 +1,243 @@
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/mujoco/grasp_simulation.h>
+
+namespace softgrasp
+{
+  std::vector<double> grip_level_forces(const GripLevelSettings &settings,
+                                        const double             equilibrium)
+  {
+    const double low =
+        settings.lowest_force > 0 ? settings.lowest_force : equilibrium;
+    std::vector<double> forces;
+    for (unsigned int k = 0; k < settings.levels; ++k)
+      forces.push_back(settings.levels == 1
+                           ? settings.highest_force
+                           : low + (settings.highest_force - low) * k /
+                                       (settings.levels - 1.0));
+    return forces;
+  }
+
+  double GraspSimulation::grip_force_at(const double             closure,
+                                        const int                grip_geom,
+                                        const GripLevelSettings &settings)
+  {
+    const mjModel *m = mujoco.model();
+    mjData        *d = mujoco.data();
+    mj_copyData(d, m, equilibrium_data);
+    for (std::size_t k = 0; k < finger_joints.size(); ++k)
+      set_target(finger_joints[k],
+                 equilibrium_targets[k] + weight(k) * closure);
+    const double end     = d->time + settings.settle_time;
+    const double average = end - parameters.settle_window;
+    double       sum = 0, weight = 0;
+    while (d->time < end)
+    {
+      mj_step(m, d);
+      if (d->time >= average)
+      {
+        mj_forward(m, d);
+        const auto f = link_contact_forces(m, d, object_body, {grip_geom});
+        sum += f[0].normal_force.norm();
+        weight += 1;
+      }
+    }
+    return weight > 0 ? sum / weight : 0;
+  }
+
+  void GraspSimulation::pull_at_level(const GripLevelSettings &settings,
+                                      RigidGripLevel          &level)
+  {
+    const mjModel *m           = mujoco.model();
+    mjData        *d           = mujoco.data();
+    const int      address     = m->jnt_qposadr[slide_joint];
+    const double   slide0      = d->qpos[address];
+    const double   duration    = settings.pull_distance / settings.pull_speed;
+    const double   t0          = d->time;
+    const double   interval    = duration / settings.samples;
+    const Eigen::Vector3d axis = parameters.pull.axis.normalized();
+    // The servo of a position-controlled arm during the pull: gain
+    // pull_stiffness, the slide joint critically damped for the hand's
+    // mass; the scene's own values come back afterwards.
+    mjModel     *model    = mujoco.model();
+    const int    actuator = mujoco.actuator_of_joint(slide_joint);
+    const int    dof      = m->jnt_dofadr[slide_joint];
+    const double gain     = model->actuator_gainprm[mjNGAIN * actuator];
+    const double bias     = model->actuator_biasprm[mjNBIAS * actuator + 1];
+    const double damping  = model->dof_damping[dof];
+    model->actuator_gainprm[mjNGAIN * actuator]     = settings.pull_stiffness;
+    model->actuator_biasprm[mjNBIAS * actuator + 1] = -settings.pull_stiffness;
+    model->dof_damping[dof] =
+        2 * std::sqrt(settings.pull_stiffness * m->body_subtreemass[base_body]);
+
+    level.links.clear();
+    for (const int g : link_geoms)
+    {
+      RigidLinkPull link;
+      link.body = mj_id2name(m, mjOBJ_BODY, m->geom_bodyid[g]);
+      link.geom = mj_id2name(m, mjOBJ_GEOM, g);
+      level.links.push_back(link);
+    }
+    auto sample = [&]()
+    {
+      mj_forward(m, d);
+      level.time.push_back(d->time - t0);
+      level.slide.push_back(d->qpos[address] - slide0);
+      const auto forces = link_contact_forces(m, d, object_body, link_geoms);
+      const auto speeds = link_slip_speeds(m, d, object_body, link_geoms);
+      for (std::size_t k = 0; k < link_geoms.size(); ++k)
+      {
+        level.links[k].normal.push_back(forces[k].normal_force.norm());
+        level.links[k].lateral.push_back(forces[k].lateral_force().norm());
+        level.links[k].drag.push_back(-forces[k].force.dot(axis));
+        level.links[k].slip_speed.push_back(speeds[k]);
+      }
+    };
+    sample();
+    // The slide target moves the distance at the pull speed; the base lags
+    // it by the drag over the servo's stiffness (level.slide records where
+    // it is).
+    double       next  = t0 + interval;
+    unsigned int n_avg = 0;
+    while (d->time - t0 < duration - 0.5 * m->opt.timestep)
+    {
+      const double moved =
+          std::min(1.0, (d->time - t0) / duration) * settings.pull_distance;
+      set_target(slide_joint, slide0 + moved);
+      mj_step(m, d);
+      if (d->time - t0 >= 0.5 * duration)
+      { // means over every step: MuJoCo's sliding contacts chatter
+        mj_forward(m, d);
+        const auto f = link_contact_forces(m, d, object_body, link_geoms);
+        const auto v = link_slip_speeds(m, d, object_body, link_geoms);
+        for (std::size_t k = 0; k < link_geoms.size(); ++k)
+        {
+          auto &link = level.links[k];
+          link.normal_mean += f[k].normal_force.norm();
+          link.lateral_mean += f[k].lateral_force().norm();
+          link.drag_mean += -f[k].force.dot(axis);
+          link.slip_mean += v[k];
+        }
+        ++n_avg;
+      }
+      if (d->time >= next - 0.5 * m->opt.timestep)
+      {
+        sample();
+        next += interval;
+      }
+    }
+    if (level.time.back() < d->time - t0 - 0.5 * m->opt.timestep)
+      sample();
+    model->actuator_gainprm[mjNGAIN * actuator]     = gain;
+    model->actuator_biasprm[mjNBIAS * actuator + 1] = bias;
+    model->dof_damping[dof]                         = damping;
+    for (auto &link : level.links)
+    {
+      const double n = std::max(1u, n_avg);
+      link.normal_mean /= n;
+      link.lateral_mean /= n;
+      link.drag_mean /= n;
+      link.slip_mean /= n;
+      link.slides =
+          link.normal_mean > 0 &&
+          link.slip_mean > settings.slide_fraction * settings.pull_speed;
+    }
+  }
+
+  std::vector<RigidGripLevel>
+  GraspSimulation::grip_levels(const GripLevelSettings &settings)
+  {
+    if (equilibrium_data == nullptr)
+      throw InputError("Grip levels need the equilibrium state: run the "
+                       "rigid stage first.");
+    if (slide_joint < 0)
+      throw InputError("The scene '" + mujoco.file + "' has no slide joint '" +
+                       parameters.pull.slide_joint +
+                       "' to pull the hand with. Fix: name the base's slide "
+                       "joint in 'Rigid environment/Pull/Slide joint'.");
+    const int grip_geom = mujoco.id(mjOBJ_GEOM, settings.grip_link, "geom");
+    // MuJoCo combines two geoms' friction by their maximum.
+    const mjModel *m        = mujoco.model();
+    double         friction = m->geom_friction[3 * grip_geom];
+    for (int g = 0; g < m->ngeom; ++g)
+      if (m->geom_bodyid[g] == object_body)
+        friction = std::max(friction, m->geom_friction[3 * g]);
+    std::vector<RigidGripLevel> levels;
+    double                      low = 0; // closure of the level before
+    double low_force                = grip_force_at(0, grip_geom, settings);
+    log << "MuJoCo: grip levels on " << settings.grip_link
+        << " (equilibrium: " << low_force << " N), pull of "
+        << settings.pull_distance << " m at " << settings.pull_speed
+        << " m/s\n";
+    if (settings.lowest_force == 0 && low_force >= settings.highest_force)
+      throw InputError(
+          "MuJoCo's grip force on " + settings.grip_link +
+          " at the equilibrium state (" + std::to_string(low_force) +
+          " N) is not below the highest grip level (" +
+          std::to_string(settings.highest_force) +
+          " N), so there are no levels between them. Fix: lower 'Rigid "
+          "environment/Grip' (the closure beyond first touch) or raise "
+          "'Grasp-and-pull sweep/Highest grip force'.");
+    for (const double target : grip_level_forces(settings, low_force))
+    {
+      RigidGripLevel level;
+      level.target_force     = target;
+      level.friction         = friction;
+      const double tolerance = settings.force_tolerance * target;
+      // Bracket the target from the level below, then regula falsi
+      // (Illinois): the force grows with the closure.
+      double a = low, fa = low_force - target;
+      double b = std::max(a + 0.02, 2 * a), fb = 0;
+      for (;;)
+      {
+        b  = std::min(b, settings.maximum_closure);
+        fb = grip_force_at(b, grip_geom, settings) - target;
+        ++level.trials;
+        if (fb >= 0 || b >= settings.maximum_closure)
+          break;
+        a = b, fa = fb;
+        b = 2 * b;
+      }
+      double c = b, fc = fb;
+      if (fa >= 0)
+        c = a, fc = fa;
+      int side = 0;
+      while (std::abs(fc) > tolerance && fb >= 0 && fa < 0 && level.trials < 30)
+      {
+        c  = (a * fb - b * fa) / (fb - fa);
+        fc = grip_force_at(c, grip_geom, settings) - target;
+        ++level.trials;
+        if (fc > 0)
+        {
+          b = c, fb = fc;
+          if (side == 1)
+            fa *= 0.5;
+          side = 1;
+        }
+        else
+        {
+          a = c, fa = fc;
+          if (side == -1)
+            fb *= 0.5;
+          side = -1;
+        }
+      }
+      // Leave the simulation at the chosen closure, settled, for the pull.
+      level.reached_force = grip_force_at(c, grip_geom, settings);
+      level.closure       = c;
+      level.matched = std::abs(level.reached_force - target) <= 2 * tolerance;
+      low           = c;
+      low_force     = level.reached_force;
+      pull_at_level(settings, level);
+      log << "  level " << std::setw(2) << levels.size() + 1 << ": "
+          << std::setw(7) << level.reached_force << " N (target " << target
+          << " N) at closure " << std::setw(8) << level.closure << " rad, "
+          << level.trials << " trials"
+          << (level.matched ? "" : " (not reached: 'Maximum closure')") << '\n';
+      levels.push_back(std::move(level));
+    }
+    return levels;
+  }
+} // namespace softgrasp
