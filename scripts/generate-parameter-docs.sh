@@ -30,3 +30,9 @@ if [ -x "$root/build/studies/arm_grasp/arm_grasp" ]; then
     > "$root/doc/parameters/arm_grasp.prm"
   echo "wrote doc/parameters/arm_grasp.prm (the arm_grasp study: arm scene, layered limb, tissue materials)"
 fi
+if [ -x "$root/build/studies/grasp_pull_sweep/grasp_pull_sweep" ]; then
+  (cd "$root/build/studies/grasp_pull_sweep" &&
+    ./grasp_pull_sweep --print-parameters grasp_pull_sweep.prm) \
+    > "$root/doc/parameters/grasp_pull_sweep.prm"
+  echo "wrote doc/parameters/grasp_pull_sweep.prm (the grasp_pull_sweep study: grip levels, pulls)"
+fi
