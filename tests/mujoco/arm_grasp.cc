@@ -22,29 +22,13 @@
 //    of the contact area, and more tissue is compressed beyond 0.40 than
 //    beyond 0.65.
 #include "../tests.h"
+#include "grasp_helpers.h"
 
 #include <mujoco/mujoco.h>
-#include <softgrasp/grasp/arm_grasp_study.h>
-#include <softgrasp/mechanics/solver_program.h>
-#include <softgrasp/mujoco/grasp_parameters.h>
 #include <softgrasp/mujoco/grasp_simulation.h>
 
 using namespace softgrasp;
-
-namespace
-{
-  void set(dealii::ParameterHandler       &prm,
-           const std::vector<std::string> &path,
-           const std::string              &entry,
-           const std::string              &value)
-  {
-    for (const auto &section : path)
-      prm.enter_subsection(section);
-    prm.set(entry, value);
-    for (std::size_t i = 0; i < path.size(); ++i)
-      prm.leave_subsection();
-  }
-} // namespace
+using softgrasp_tests::set;
 
 int
 main(int argc, char **argv)
@@ -52,22 +36,11 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   softgrasp_tests::initlog();
   dealii::ParameterHandler prm;
-  GraspParameters::declare_parameters(prm);
-  ArmGraspStudy::declare_parameters(prm);
-  SolverProgram::read_parameters<3>(prm, PARAMETER_FILES "/arm_grasp.prm");
-  // Coarse: 16 cells around, no fascia (its thin cells set the explicit
-  // step), 0.1 rad of closure in 5 samples.
-  set(prm, {"Mesh", "Layered limb"}, "Circumferential cells", "16");
-  set(prm, {"Mesh", "Layered limb"}, "Radial cells", "1, 1, 1, 2");
-  set(prm, {"Mesh", "Layered limb"}, "Grasp zone cells", "4");
-  set(prm, {"Mesh", "Layered limb"}, "Fascia thickness", "0");
+  // Coarse, 0.1 rad of closure in 5 samples.
+  softgrasp_tests::read_coarse_arm(prm, "output-arm");
   set(prm, {"Rigid environment", "Indentation"}, "Extra joint angle", "0.1");
   set(prm, {"Rigid environment", "Indentation"}, "Samples", "5");
-  set(prm, {"Indentation study"}, "Pictures", "false");
-  set(prm, {"Indentation study"}, "Target normal force", "0");
   set(prm, {"Time"}, "Time step", "0.05");
-  set(prm, {"Output"}, "Directory", "output-arm");
-  set(prm, {"Output"}, "VTU interval", "0");
 
   ArmGraspStudy   study(MPI_COMM_WORLD, prm);
   GraspParameters grasp;

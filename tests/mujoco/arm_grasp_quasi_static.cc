@@ -11,28 +11,12 @@
 //  - the distal links carry the grip (more than 10 N each on this coarse
 //    mesh).
 #include "../tests.h"
+#include "grasp_helpers.h"
 
-#include <softgrasp/grasp/arm_grasp_study.h>
-#include <softgrasp/mechanics/solver_program.h>
-#include <softgrasp/mujoco/grasp_parameters.h>
 #include <softgrasp/mujoco/grasp_simulation.h>
 
 using namespace softgrasp;
-
-namespace
-{
-  void set(dealii::ParameterHandler       &prm,
-           const std::vector<std::string> &path,
-           const std::string              &entry,
-           const std::string              &value)
-  {
-    for (const auto &section : path)
-      prm.enter_subsection(section);
-    prm.set(entry, value);
-    for (std::size_t i = 0; i < path.size(); ++i)
-      prm.leave_subsection();
-  }
-} // namespace
+using softgrasp_tests::set;
 
 int
 main(int argc, char **argv)
@@ -40,18 +24,8 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   softgrasp_tests::initlog();
   dealii::ParameterHandler prm;
-  GraspParameters::declare_parameters(prm);
-  ArmGraspStudy::declare_parameters(prm);
-  SolverProgram::read_parameters<3>(prm, PARAMETER_FILES "/arm_grasp.prm");
-  set(prm, {"Mesh", "Layered limb"}, "Circumferential cells", "16");
-  set(prm, {"Mesh", "Layered limb"}, "Radial cells", "1, 1, 1, 2");
-  set(prm, {"Mesh", "Layered limb"}, "Grasp zone cells", "4");
-  set(prm, {"Mesh", "Layered limb"}, "Fascia thickness", "0");
-  set(prm, {"Indentation study"}, "Pictures", "false");
-  set(prm, {"Indentation study"}, "Target normal force", "0");
+  softgrasp_tests::read_coarse_arm(prm, "output-arm-qs");
   set(prm, {"Time"}, "Integrator", "quasi-static");
-  set(prm, {"Output"}, "Directory", "output-arm-qs");
-  set(prm, {"Output"}, "VTU interval", "0");
 
   ArmGraspStudy   study(MPI_COMM_WORLD, prm);
   GraspParameters grasp;
