@@ -9,6 +9,7 @@
 #include <softgrasp/base/gnuplot.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/base/program_arguments.h>
 #include <softgrasp/grasp/arm_grasp_study.h>
 #include <softgrasp/io/kinematics_file.h>
 #include <softgrasp/mechanics/solver_program.h>
@@ -155,36 +156,20 @@ namespace softgrasp
 
   int GraspPullSweep::main(int argc, char **argv)
   {
-    const MPI_Comm comm     = MPI_COMM_WORLD;
-    const bool     root     = Utilities::MPI::this_mpi_process(comm) == 0;
-    bool           print    = false;
-    std::string    filename = "grasp_pull_sweep.prm";
-    for (int i = 1; i < argc; ++i)
-    {
-      const std::string arg = argv[i];
-      if (arg == "--print-parameters")
-        print = true;
-      else if (arg == "--help" || arg == "-h")
-      {
-        if (root)
-          std::cout << "Usage: " << argv[0]
-                    << " [--print-parameters] [file.prm]\n"
-                       "The grasp-and-pull sweep: MuJoCo's grasp at every "
-                       "grip level, then the pull (doc/studies.md).\n"
-                       "Default parameter file: grasp_pull_sweep.prm\n";
-        return 0;
-      }
-      else if (!arg.empty() && arg[0] == '-')
-      {
-        if (root)
-          std::cerr << "Error: unknown option '" << arg
-                    << "'. Fix: use --print-parameters, --help or a .prm "
-                       "file name.\n";
-        return 1;
-      }
-      else
-        filename = arg;
-    }
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const auto     arguments =
+        ProgramArguments::parse(argc, argv, "grasp_pull_sweep.prm");
+    const int exit_code = arguments.handle(
+        argv[0],
+        "The grasp-and-pull sweep: MuJoCo's grasp and pull at every grip "
+        "level, then the finite element closing and pulls "
+        "(doc/studies.md).",
+        root);
+    if (exit_code >= 0)
+      return exit_code;
+    const bool              print    = arguments.print_parameters;
+    const std::string      &filename = arguments.parameter_file;
     const ErrorCommunicator error_comm(comm);
     try
     {

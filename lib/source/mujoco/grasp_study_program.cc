@@ -4,6 +4,7 @@
 #include <iostream>
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/program_arguments.h>
 #include <softgrasp/grasp/indentation_study.h>
 #include <softgrasp/mechanics/solver_program.h>
 #include <softgrasp/mujoco/grasp_simulation.h>
@@ -81,29 +82,19 @@ namespace softgrasp
 
   int GraspStudyProgram::run(int argc, char **argv) const
   {
-    const MPI_Comm comm     = MPI_COMM_WORLD;
-    const bool     root     = Utilities::MPI::this_mpi_process(comm) == 0;
-    bool           print    = false;
-    std::string    filename = default_parameter_file;
-    for (int i = 1; i < argc; ++i)
-    {
-      const std::string arg = argv[i];
-      if (arg == "--print-parameters")
-        print = true;
-      else if (arg == "--help" || arg == "-h")
-      {
-        if (root)
-          std::cout << "Usage: " << argv[0]
-                    << " [--print-parameters] [file.prm]\n"
-                       "Runs MuJoCo to the equilibrium grasp (unless "
-                       "'Indentation study/Rigid stage' is 'read'), then the "
-                       "finite element indentation.\nDefault parameter file: "
-                    << default_parameter_file << std::endl;
-        return 0;
-      }
-      else
-        filename = arg;
-    }
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const auto     arguments =
+        ProgramArguments::parse(argc, argv, default_parameter_file);
+    const int exit_code = arguments.handle(
+        argv[0],
+        "Runs MuJoCo to the equilibrium grasp (unless 'Indentation "
+        "study/Rigid stage' is 'read'), then the finite element indentation.",
+        root);
+    if (exit_code >= 0)
+      return exit_code;
+    const bool              print    = arguments.print_parameters;
+    const std::string      &filename = arguments.parameter_file;
     const ErrorCommunicator error_comm(comm);
     try
     {
