@@ -19,6 +19,15 @@ namespace softgrasp
     result.closure        = extra_angle * std::min(t_end / duration, 1.0);
     result.target_met     = solver.stopped_by_criterion();
     result.steps          = records.empty() ? 0 : records.size() - 1;
+    const auto check      = final_state_check(solver);
+    result.balance        = check.balance;
+    result.penetration    = check.penetration;
+  }
+
+  IndentationStudy::StateCheck
+  IndentationStudy::final_state_check(const MechanicsSolver<3> &solver) const
+  {
+    const auto &records = solver.contact_force_history();
     // Force balance on the body: the link forces against the supports.
     Eigen::Vector3d sum     = Eigen::Vector3d::Zero();
     double          largest = 0;
@@ -33,11 +42,13 @@ namespace softgrasp
     for (const auto &[id, r] : solver.system().reactions())
       for (unsigned int d = 0; d < 3; ++d)
         support[d] += r[d];
-    result.balance = (sum - support).norm() / std::max(largest, 1e-300);
+    StateCheck check;
+    check.balance  = (sum - support).norm() / std::max(largest, 1e-300);
     double deepest = 0;
     for (const auto &node : solver.contact()->nodes())
       deepest = std::max(deepest, -node.gap);
-    result.penetration = Utilities::MPI::max(deepest, comm);
+    check.penetration = Utilities::MPI::max(deepest, comm);
+    return check;
   }
 
   void IndentationStudy::write_link_table(const MechanicsSolver<3> &solver,

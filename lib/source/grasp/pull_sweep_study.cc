@@ -206,7 +206,10 @@ namespace softgrasp
     {
       level.failure = e.what();
     }
-    level.links = link_force_histories(solver->rigid_bodies(),
+    const auto check  = final_state_check(*solver);
+    level.balance     = check.balance;
+    level.penetration = check.penetration;
+    level.links       = link_force_histories(solver->rigid_bodies(),
                                        solver->contact_force_history());
     // Keep the pull's records only (time from the level's start).
     for (auto &link : level.links)

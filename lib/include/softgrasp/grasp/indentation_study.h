@@ -153,6 +153,16 @@ namespace softgrasp
     static void place_tissue(SolverInputs<3>    &inputs,
                              const Placement<3> &placement);
 
+    /// The last recorded state of a run: how well the link forces balance
+    /// the supports' reactions (|sum F_links - R| / max |F_link|) and the
+    /// deepest nodal penetration of a link (m). Collective.
+    struct StateCheck
+    {
+      double balance     = 0;
+      double penetration = 0;
+    };
+    StateCheck final_state_check(const MechanicsSolver<3> &solver) const;
+
     /// Study-specific output after the run (all ranks, collective).
     virtual void postprocess(const MechanicsSolver<3> &solver,
                              const KinematicsData     &phases);

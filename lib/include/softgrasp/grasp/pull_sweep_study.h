@@ -17,6 +17,9 @@ namespace softgrasp
     bool        reached       = false; ///< false: the closure ended below it
     bool        pulled        = false; ///< the pull ran to its end
     std::string failure;               ///< why the pull stopped, if it did
+    /// At the end of the pull: |sum F_links - R| / max |F_link| and the
+    /// deepest penetration of a link (m).
+    double balance = 0, penetration = 0;
     /// Every link's forces over the pull (time from the level's start).
     std::vector<LinkForceHistory> links;
   };
