@@ -126,15 +126,6 @@ namespace softgrasp
   grip_link_points(const std::vector<RigidGripLevel> &levels,
                    const std::string                 &grip_geom);
 
-  /**
-   * The sweep's figure (PNG, as the paper's fig. 10) in @p directory:
-   * lateral against normal force on the grip link, the rigid simulator's
-   * levels as one line and the finite element levels as another, points
-   * coloured by level, with the line mu N; a second panel splits the
-   * finite element lateral force into its friction-only part and the rest
-   * (pressure of the tissue against the link) per level. Data in
-   * <base>_figure.dat, the script <base>_figure.gnuplot.
-   */
   /// The grip link's points of the finite element levels that were pulled
   /// (means over the second half of the pull; lateral_max holds the mean
   /// friction-only part).
@@ -152,6 +143,15 @@ namespace softgrasp
                        const std::string              &summary_file,
                        const std::string              &pulls_file);
 
+  /**
+   * The sweep's figure (PNG, as the paper's fig. 10) in @p directory:
+   * lateral against normal force on the grip link, the rigid simulator's
+   * levels as one line and the finite element levels as another, points
+   * coloured by level, with the line mu N; a second panel splits the
+   * finite element lateral force into its friction-only part and the rest
+   * (pressure of the tissue against the link) per level. Data in
+   * <base>_figure.dat, the script <base>_figure.gnuplot.
+   */
   void write_sweep_figure(const std::vector<SweepPoint> &rigid,
                           const std::vector<SweepPoint> &fe,
                           const double                   friction,
