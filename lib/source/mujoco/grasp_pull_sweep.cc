@@ -382,11 +382,12 @@ namespace softgrasp
         if (fe[k].pulled && link.link == grip_label && !link.time.empty())
         {
           SweepPoint p;
-          p.level        = k + 1;
-          p.grip_force   = fe[k].reached_force;
-          p.normal_mean  = second_half_mean(link.time, link.normal);
-          p.lateral_mean = second_half_mean(link.time, link.lateral);
-          p.lateral_max  = second_half_mean(link.time, link.friction);
+          p.level         = k + 1;
+          p.grip_force    = fe[k].reached_force;
+          p.normal_mean   = second_half_mean(link.time, link.normal);
+          p.lateral_mean  = second_half_mean(link.time, link.lateral);
+          p.lateral_max   = max_of(link.lateral);
+          p.friction_mean = second_half_mean(link.time, link.friction);
           points.push_back(p);
         }
     return points;
@@ -457,7 +458,7 @@ namespace softgrasp
       for (const auto &p : fe)
       {
         out << p.level << ' ' << p.grip_force << ' ' << p.normal_mean << ' '
-            << p.lateral_mean << ' ' << p.lateral_max << '\n';
+            << p.lateral_mean << ' ' << p.friction_mean << '\n';
         top    = std::max({top, p.normal_mean, p.lateral_mean});
         levels = std::max(levels, p.level);
       }

@@ -119,6 +119,7 @@ namespace softgrasp
   {
     unsigned int level = 0;
     double grip_force = 0, normal_mean = 0, lateral_mean = 0, lateral_max = 0;
+    double friction_mean = 0; ///< finite elements: friction-only part
   };
 
   /// The grip link's points of @p levels (one per level).
@@ -127,8 +128,7 @@ namespace softgrasp
                    const std::string                 &grip_geom);
 
   /// The grip link's points of the finite element levels that were pulled
-  /// (means over the second half of the pull; lateral_max holds the mean
-  /// friction-only part).
+  /// (means over the second half of the pull).
   std::vector<SweepPoint> grip_link_points(const std::vector<FeGripLevel> &fe,
                                            const std::string &grip_label);
 
