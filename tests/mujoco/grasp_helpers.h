@@ -4,10 +4,14 @@
 #ifndef softgrasp_tests_grasp_helpers_h
 #define softgrasp_tests_grasp_helpers_h
 
+#include <functional>
+#include <memory>
 #include <softgrasp/grasp/arm_grasp_study.h>
 #include <softgrasp/grasp/indentation_study.h>
 #include <softgrasp/mechanics/solver_program.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
+#include <softgrasp/mujoco/grasp_pull_sweep.h>
+#include <sstream>
 
 namespace softgrasp_tests
 {
@@ -65,6 +69,45 @@ namespace softgrasp_tests
     set(prm, {"Output"}, "Directory", directory);
     set(prm, {"Output"}, "VTU interval", "0");
   }
+
+  /**
+   * The shipped grasp_pull_sweep.prm on the coarse limb, 2 levels up to
+   * 30 N, a 5 mm pull, no VTU output, writing into @p directory; @p change
+   * may set more entries. The rigid stage has run (its log in log).
+   */
+  struct CoarseSweep
+  {
+    dealii::ParameterHandler                   prm;
+    std::unique_ptr<softgrasp::PullSweepStudy> study;
+    std::unique_ptr<softgrasp::GraspPullSweep> sweep;
+    std::ostringstream                         log;
+
+    explicit CoarseSweep(
+        const std::string                                     &directory,
+        const std::function<void(dealii::ParameterHandler &)> &change = {})
+    {
+      using softgrasp::GraspPullSweep;
+      GraspPullSweep::declare_parameters(prm);
+      const std::string file = PARAMETER_FILES "/grasp_pull_sweep.prm";
+      softgrasp::SolverProgram::read_parameters<3>(prm, file);
+      set(prm, {"Mesh", "Layered limb"}, "Circumferential cells", "16");
+      set(prm, {"Mesh", "Layered limb"}, "Radial cells", "1, 1, 1, 2");
+      set(prm, {"Mesh", "Layered limb"}, "Grasp zone cells", "4");
+      set(prm, {"Mesh", "Layered limb"}, "Fascia thickness", "0");
+      set(prm, {"Grasp-and-pull sweep"}, "Levels", "2");
+      set(prm, {"Grasp-and-pull sweep"}, "Highest grip force", "30");
+      set(prm, {"Grasp-and-pull sweep"}, "Pull distance", "0.005");
+      set(prm, {"Grasp-and-pull sweep"}, "Pull samples", "10");
+      set(prm, {"Output"}, "Directory", directory);
+      set(prm, {"Output"}, "VTU interval", "0");
+      if (change)
+        change(prm);
+      study = std::make_unique<softgrasp::PullSweepStudy>(MPI_COMM_WORLD, prm);
+      sweep =
+          std::make_unique<GraspPullSweep>(MPI_COMM_WORLD, prm, file, *study);
+      sweep->run_rigid(log);
+    }
+  };
 
   inline softgrasp::GraspParameters
   sphere_grasp_parameters(dealii::ParameterHandler &prm)

@@ -1,51 +1,64 @@
-// The finite element half of the grasp-and-pull sweep (GraspPullSweep::
-// run_fe) on a coarse arm (16 cells around, no fascia), 2 levels, a 5 mm
-// pull, the sweep's friction (mu = 1) and damping.
-//  - every level is reached: the closing stops at the first record where
-//    the grip link's normal force is at or above the level's;
-//  - every pull runs to its end, with the link forces balancing the
-//    humerus' reaction (within 5 % of the largest link force: the rest is
-//    the inertia of the explicit run; 2 % here) and no node inside a link
-//    by more than 1 micrometre;
-//  - the links meet a drag against the pull: at its end the total force
-//    on them along the pull axis exceeds 5 % of their total normal force
-//    (11 and 9 % here; it is 0 when the pull starts).
+// The finite element half of the grasp-and-pull sweep on a coarse arm (16
+// cells around, no fascia), 2 levels, a 5 mm pull, the sweep's friction
+// (mu = 1) and damping; run three ways, as a user would:
+//  - the whole sweep (GraspPullSweep::run_fe) in one go:
+//    - every level is reached: the closing stops at the first record where
+//      the grip link's normal force is at or above the level's;
+//    - every pull runs to its end, with the link forces balancing the
+//      humerus' reaction (within 5 % of the largest link force: the rest
+//      is the inertia of the explicit run; 2 % here) and no node inside a
+//      link by more than 1 micrometre;
+//    - Coulomb: at every record of every pull, every link's friction-only
+//      force is at most mu times the sum of its nodes' normal forces;
+//    - the links meet a drag against the pull: at its end the total force
+//      on them along the pull axis exceeds 5 % of their total normal force
+//      (11 and 9 % here; it is 0 when the pull starts);
+//    - a collect run (a new sweep object, as a new process) reads the same
+//      levels back from their records, and does not run MuJoCo again;
+//  - level 2 alone (--level 2) in a fresh directory: the same level 2;
+//  - a sweep killed after level 1 (--level 1 ran) and run again: level 1
+//    is not run again (its record is untouched) and both levels equal the
+//    uninterrupted sweep's.
 #include "../tests.h"
 #include "grasp_helpers.h"
 
+#include <filesystem>
 #include <softgrasp/mujoco/grasp_pull_sweep.h>
 
 using namespace softgrasp;
-using softgrasp_tests::set;
+using softgrasp_tests::CoarseSweep;
 
 namespace
 {
-  /// Total drag (force on the links against the pull, world y) and total
-  /// link normal force at the end of each level's pull (N).
-  std::vector<std::pair<double, double>> run(const std::string &directory)
+  /// The largest difference between two levels' link force histories,
+  /// relative to the largest force (0 if equal); 1 if their shapes differ.
+  double difference(const FeGripLevel &a, const FeGripLevel &b)
   {
-    dealii::ParameterHandler prm;
-    GraspPullSweep::declare_parameters(prm);
-    SolverProgram::read_parameters<3>(prm,
-                                      PARAMETER_FILES "/grasp_pull_sweep.prm");
-    set(prm, {"Mesh", "Layered limb"}, "Circumferential cells", "16");
-    set(prm, {"Mesh", "Layered limb"}, "Radial cells", "1, 1, 1, 2");
-    set(prm, {"Mesh", "Layered limb"}, "Grasp zone cells", "4");
-    set(prm, {"Mesh", "Layered limb"}, "Fascia thickness", "0");
-    set(prm, {"Grasp-and-pull sweep"}, "Levels", "2");
-    set(prm, {"Grasp-and-pull sweep"}, "Highest grip force", "30");
-    set(prm, {"Grasp-and-pull sweep"}, "Pull distance", "0.005");
-    set(prm, {"Grasp-and-pull sweep"}, "Pull samples", "10");
-    set(prm, {"Output"}, "Directory", directory);
-    set(prm, {"Output"}, "VTU interval", "0");
-    PullSweepStudy study(MPI_COMM_WORLD, prm);
-    GraspPullSweep sweep(
-        MPI_COMM_WORLD, prm, PARAMETER_FILES "/grasp_pull_sweep.prm", study);
-    std::ostringstream log;
-    sweep.run_rigid(log);
-    sweep.run_fe(log);
-    std::vector<std::pair<double, double>> totals;
-    for (const auto &level : sweep.fe_levels())
+    if (a.links.size() != b.links.size() || a.pulled != b.pulled ||
+        a.reached_force != b.reached_force)
+      return 1;
+    double largest = 1e-12, diff = 0;
+    for (std::size_t l = 0; l < a.links.size(); ++l)
+    {
+      const auto &x = a.links[l], &y = b.links[l];
+      if (x.link != y.link || x.time.size() != y.time.size())
+        return 1;
+      for (std::size_t i = 0; i < x.time.size(); ++i)
+      {
+        largest = std::max(largest, x.force[i].norm());
+        diff    = std::max({diff,
+                            (x.force[i] - y.force[i]).norm(),
+                            std::abs(x.friction[i] - y.friction[i]),
+                            std::abs(x.nodal_normal[i] - y.nodal_normal[i])});
+      }
+    }
+    return diff / largest;
+  }
+
+  void check_physics(const std::vector<FeGripLevel> &levels, const double mu)
+  {
+    SG_CHECK(levels.size() == 2, "two levels");
+    for (const auto &level : levels)
     {
       SG_CHECK(level.reached, "level reached");
       SG_CHECK(level.reached_force >= level.target_force, "at or above it");
@@ -58,10 +71,13 @@ namespace
         {
           drag -= link.force.back()[1];
           normal += link.normal.back();
+          for (std::size_t i = 0; i < link.time.size(); ++i)
+            SG_CHECK(link.friction[i] <=
+                         mu * link.nodal_normal[i] * (1 + 1e-9) + 1e-12,
+                     "Coulomb on " + link.link);
         }
-      totals.emplace_back(drag, normal);
+      SG_CHECK(drag > 0.05 * normal, "the links meet a drag");
     }
-    return totals;
   }
 } // namespace
 
@@ -70,12 +86,63 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   softgrasp_tests::initlog();
-  const auto totals = run("output-pull");
+  // a run of the test starts afresh (its directory is kept between runs)
+  for (const char *directory : {"output-full", "output-level", "output-resume"})
+    std::filesystem::remove_all(directory);
+  std::vector<FeGripLevel> full;
+  {
+    CoarseSweep s("output-full");
+    s.sweep->run_fe(s.log);
+    full = s.sweep->fe_levels();
+    check_physics(full, 1.0);
+  }
   dealii::deallog << "2 levels reached, pulled to the end, link forces "
-                     "balance the humerus within 5 %, no penetration"
+                     "balance the humerus within 5 %, no penetration, "
+                     "friction within Coulomb's bound, a drag above 5 % of "
+                     "the normal force"
                   << std::endl;
-  for (const auto &[drag, normal] : totals)
-    SG_CHECK(drag > 0.05 * normal, "the links meet a drag");
-  dealii::deallog << "the links' drag exceeds 5 % of their normal force"
+  {
+    CoarseSweep s("output-full");
+    SG_CHECK(s.log.str().find("not run again") != std::string::npos,
+             "the rigid stage's record is reused");
+    s.sweep->collect(s.log);
+    const auto &read = s.sweep->fe_levels();
+    SG_CHECK(read.size() == 2 && difference(read[0], full[0]) == 0 &&
+                 difference(read[1], full[1]) == 0,
+             "collect reads the levels back");
+  }
+  dealii::deallog << "collect: the levels read back from their records"
+                  << std::endl;
+  {
+    CoarseSweep s("output-level");
+    s.sweep->close(s.log, 2);
+    s.sweep->pull(2, s.log);
+    const auto &alone = s.sweep->fe_levels();
+    SG_CHECK(alone.size() == 2 && !alone[0].pulled, "only level 2 pulled");
+    SG_CHECK(difference(alone[1], full[1]) < 1e-9,
+             "level 2 alone equals level 2 of the sweep");
+  }
+  dealii::deallog << "--level 2 alone: level 2 of the whole sweep" << std::endl;
+  {
+    namespace fs = std::filesystem;
+    {
+      CoarseSweep s("output-resume");
+      s.sweep->close(s.log, 1);
+      s.sweep->pull(1, s.log);
+    }
+    CoarseSweep       s("output-resume");
+    const std::string record = s.study->record_file(1);
+    const auto        before = fs::last_write_time(record);
+    s.sweep->run_fe(s.log);
+    SG_CHECK(fs::last_write_time(record) == before &&
+                 s.log.str().find("Level 1: finished") != std::string::npos,
+             "level 1 is not run again");
+    const auto &resumed = s.sweep->fe_levels();
+    SG_CHECK(resumed.size() == 2 && difference(resumed[0], full[0]) < 1e-9 &&
+                 difference(resumed[1], full[1]) < 1e-9,
+             "the resumed sweep equals the uninterrupted one");
+  }
+  dealii::deallog << "resumed after level 1: level 1 not run again, both "
+                     "levels equal the uninterrupted sweep's"
                   << std::endl;
 }

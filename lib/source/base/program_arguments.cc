@@ -3,24 +3,45 @@
 
 namespace softgrasp
 {
-  ProgramArguments ProgramArguments::parse(int                argc,
-                                           char             **argv,
-                                           const std::string &default_file)
+  ProgramArguments
+  ProgramArguments::parse(int                               argc,
+                          char                            **argv,
+                          const std::string                &default_file,
+                          const std::vector<ProgramOption> &accepted)
   {
     ProgramArguments arguments;
     arguments.default_file   = default_file;
     arguments.parameter_file = default_file;
+    arguments.accepted       = accepted;
+    std::string valid        = "--print-parameters, --help";
+    for (const auto &option : accepted)
+      valid += ", " + option.name +
+               (option.value.empty() ? "" : " <" + option.value + ">");
     for (int i = 1; i < argc; ++i)
     {
-      const std::string arg = argv[i];
+      const std::string    arg = argv[i];
+      const ProgramOption *own = nullptr;
+      for (const auto &option : accepted)
+        if (option.name == arg)
+          own = &option;
       if (arg == "--print-parameters")
         arguments.print_parameters = true;
       else if (arg == "--help" || arg == "-h")
         arguments.help = true;
+      else if (own != nullptr && !own->value.empty())
+      {
+        if (i + 1 >= argc || argv[i + 1][0] == '-')
+          arguments.error = "the option '" + arg +
+                            "' needs a value. Fix: " + arg + " <" + own->value +
+                            ">.";
+        else
+          arguments.options[arg] = argv[++i];
+      }
+      else if (own != nullptr)
+        arguments.options[arg] = "";
       else if (!arg.empty() && arg[0] == '-')
-        arguments.error = "unknown option '" + arg +
-                          "'. Fix: use --print-parameters, --help or the "
-                          "name of a .prm file.";
+        arguments.error = "unknown option '" + arg + "'. Fix: use " + valid +
+                          " or the name of a .prm file.";
       else
         arguments.parameter_file = arg;
     }
@@ -40,9 +61,19 @@ namespace softgrasp
     if (!help)
       return -1;
     if (root)
-      std::cout << "Usage: " << program << " [--print-parameters] [file.prm]\n"
-                << description << "\nDefault parameter file: " << default_file
-                << std::endl;
+    {
+      std::cout << "Usage: " << program << " [--print-parameters]";
+      for (const auto &option : accepted)
+        std::cout << " [" << option.name
+                  << (option.value.empty() ? "" : " <" + option.value + ">")
+                  << "]";
+      std::cout << " [file.prm]\n" << description << "\n";
+      for (const auto &option : accepted)
+        std::cout << "  " << option.name
+                  << (option.value.empty() ? "" : " <" + option.value + ">")
+                  << ": " << option.help << "\n";
+      std::cout << "Default parameter file: " << default_file << std::endl;
+    }
     return 0;
   }
 } // namespace softgrasp

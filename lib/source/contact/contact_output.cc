@@ -160,6 +160,7 @@ namespace softgrasp
       out.force += on_geom;
       out.moment += (x - pose.position).cross(on_geom);
       out.friction += on_geom - node.normal * node.normal.dot(on_geom);
+      out.nodal_normal += std::abs(node.normal.dot(on_geom));
       out.area += areas[j];
       ++out.active;
       if (node.status == ContactStatus::slip)
@@ -192,9 +193,10 @@ namespace softgrasp
         sum(out.friction);
         sum(mean_normal[b][g]);
         sum(symmetry[b][g]);
-        out.area     = Utilities::MPI::sum(out.area, comm);
-        out.active   = Utilities::MPI::sum(out.active, comm);
-        out.slipping = Utilities::MPI::sum(out.slipping, comm);
+        out.nodal_normal = Utilities::MPI::sum(out.nodal_normal, comm);
+        out.area         = Utilities::MPI::sum(out.area, comm);
+        out.active       = Utilities::MPI::sum(out.active, comm);
+        out.slipping     = Utilities::MPI::sum(out.slipping, comm);
         out.normal =
             reference_direction(b, g, mean_normal[b][g], symmetry[b][g]);
         out.normal_part  = out.normal * out.normal.dot(out.force);
@@ -374,7 +376,9 @@ namespace softgrasp
                                          &f.lateral_part,
                                          &f.friction})
           data.insert(data.end(), v->data(), v->data() + 3);
-        data.insert(data.end(), {f.area, double(f.active), double(f.slipping)});
+        data.insert(
+            data.end(),
+            {f.nodal_normal, f.area, double(f.active), double(f.slipping)});
       }
     }
     return data;
@@ -407,9 +411,10 @@ namespace softgrasp
                                    &f.friction})
           for (unsigned int d = 0; d < 3; ++d)
             (*v)[d] = next();
-        f.area     = next();
-        f.active   = static_cast<unsigned int>(next());
-        f.slipping = static_cast<unsigned int>(next());
+        f.nodal_normal = next();
+        f.area         = next();
+        f.active       = static_cast<unsigned int>(next());
+        f.slipping     = static_cast<unsigned int>(next());
       }
     }
     return r;

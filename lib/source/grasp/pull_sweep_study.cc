@@ -1,9 +1,13 @@
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/grasp/pull_sweep_study.h>
+#include <softgrasp/io/hdf5_record.h>
 #include <softgrasp/mechanics/mechanics_solver.h>
 #include <softgrasp/rigid/pose_trajectory.h>
 #include <sstream>
@@ -14,6 +18,49 @@ namespace softgrasp
 
   namespace
   {
+    /// The first entry of @p now that @p before had otherwise ("'path' is
+    /// 'x', was 'y'"), or "" if the two are alike.
+    std::string changed_setting(const std::string &before,
+                                const std::string &now)
+    {
+      if (before == now)
+        return "";
+      std::map<std::string, std::string> old;
+      std::istringstream                 a(before), b(now);
+      const auto                         split = [](const std::string &line)
+      {
+        const auto at = line.find(" = ");
+        return std::make_pair(line.substr(0, at),
+                              at == std::string::npos ? ""
+                                                      : line.substr(at + 3));
+      };
+      for (std::string line; std::getline(a, line);)
+        old.insert(split(line));
+      for (std::string line; std::getline(b, line);)
+      {
+        const auto [name, value] = split(line);
+        const auto it            = old.find(name);
+        if (it == old.end())
+          return "'" + name + "' is new";
+        if (it->second != value)
+          return "'" + name + "' is '" + value + "', was '" + it->second + "'";
+      }
+      return "an entry was removed";
+    }
+
+    /// The named time series of @p link that a record stores (but force).
+    template <typename Link> auto series(Link &link)
+    {
+      return std::vector<std::pair<std::string, decltype(&link.time)>>{
+          {"time", &link.time},
+          {"normal", &link.normal},
+          {"lateral", &link.lateral},
+          {"friction", &link.friction},
+          {"nodal_normal", &link.nodal_normal},
+          {"closed_nodes", &link.closed},
+          {"slipping_nodes", &link.slipping}};
+    }
+
     Pose inverse(const Pose &p)
     {
       const Eigen::Quaterniond q = p.orientation.conjugate();
@@ -120,6 +167,9 @@ namespace softgrasp
       : ArmGraspStudy(comm, prm)
       , output(solver_inputs.solver.output.directory)
   {
+    for (const auto &[name, value] : ParameterReader::flatten(prm))
+      if (name.rfind("Output/", 0) != 0)
+        settings += name + " = " + value + "\n";
   }
 
   std::string PullSweepStudy::level_directory(const unsigned int k) const
@@ -129,11 +179,70 @@ namespace softgrasp
     return name.str();
   }
 
+  std::string PullSweepStudy::record_file(const unsigned int k) const
+  {
+    return level_directory(k) + "/level.h5";
+  }
+
+  std::vector<FeGripLevel>
+  PullSweepStudy::recorded_levels(const std::vector<double> &forces) const
+  {
+    // Every rank reads the records (all need the levels' times).
+    std::vector<FeGripLevel> levels;
+    for (std::size_t k = 0; k < forces.size(); ++k)
+    {
+      const std::string file = record_file(k + 1);
+      if (!std::filesystem::exists(file))
+        break;
+      levels.push_back(read_grip_level(file));
+      const std::string change =
+          changed_setting(levels.back().settings, settings);
+      if (!change.empty())
+        throw InputError("Level " + std::to_string(k + 1) + " in '" + file +
+                         "' was computed with other settings: " + change +
+                         ". Fix: start afresh in another 'Output/Directory', "
+                         "or delete '" +
+                         output + "/fe_closing' and the level_* directories.");
+      const double recorded = levels.back().target_force;
+      if (std::abs(recorded - forces[k]) > 1e-9 * forces[k])
+        throw InputError(
+            "Level " + std::to_string(k + 1) + " in '" + file +
+            "' was closed to " + std::to_string(recorded) +
+            " N; this sweep asks for " + std::to_string(forces[k]) +
+            " N (its levels or the rigid stage changed). Fix: start afresh "
+            "in another 'Output/Directory', or delete '" +
+            output + "/fe_closing' and the level_* directories.");
+    }
+    return levels;
+  }
+
+  void PullSweepStudy::record(const FeGripLevel &level,
+                              const unsigned int k) const
+  {
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+      {
+        std::filesystem::create_directories(level_directory(k));
+        write_grip_level(level, record_file(k));
+      }
+      catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    if (!error.empty())
+      throw InputError(error);
+  }
+
   std::vector<FeGripLevel>
   PullSweepStudy::close_to_levels(const KinematicsData      &kinematics,
                                   const std::string         &grip_link,
                                   const std::vector<double> &forces)
   {
+    std::vector<FeGripLevel> levels = recorded_levels(forces);
+    if (levels.size() == forces.size())
+      return levels;
     const auto     &phase  = kinematics.phase("indentation");
     const auto      cut    = kinematics.slice(phase.start_time, phase.end_time);
     SolverInputs<3> inputs = inputs_for(cut);
@@ -143,47 +252,55 @@ namespace softgrasp
     const auto [b, g] =
         link_index(inputs.bodies, grip_link, "Grasp-and-pull sweep/Grip link");
 
-    std::vector<FeGripLevel> levels(forces.size());
-    for (std::size_t k = 0; k < forces.size(); ++k)
-      levels[k].target_force = forces[k];
-    bool closing_started = false;
-    for (std::size_t k = 0; k < forces.size(); ++k)
+    // A killed sweep goes on from the closing's latest checkpoint.
+    bool started = false;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      started = std::filesystem::exists(output + "/fe_closing/checkpoint") ||
+                std::filesystem::exists(output + "/fe_closing/checkpoint.old");
+    started = Utilities::MPI::broadcast(comm, started, 0);
+    for (std::size_t k = levels.size(); k < forces.size(); ++k)
     {
-      FeGripLevel &level = levels[k];
-      if (k > 0 && levels[k - 1].reached_force >= forces[k])
-      { // the state that reached the level below reaches this one too
+      FeGripLevel level;
+      level.target_force = forces[k];
+      level.settings     = settings;
+      if (k > 0 &&
+          (!levels[k - 1].reached || levels[k - 1].reached_force >= forces[k]))
+      { // the state of the level below: it reaches this one too, or the
+        // closure ended below both
         level.reached_force = levels[k - 1].reached_force;
         level.time          = levels[k - 1].time;
-        level.reached       = true;
+        level.reached       = levels[k - 1].reached;
+      }
+      else
+      {
+        inputs.solver.checkpoint.resume = started;
+        auto solver = MechanicsSolver<3>::create(comm, inputs);
+        solver->set_stop_criterion(
+            [&solver, b = b, g = g, target = forces[k]]()
+            {
+              const auto &latest = solver->contact_force_history().back();
+              return latest.forces[b][g].normal_force() >= target;
+            });
+        solver->run();
+        started             = true;
+        const auto &latest  = solver->contact_force_history().back();
+        level.reached_force = latest.forces[b][g].normal_force();
+        level.time          = latest.time;
+        level.reached       = solver->stopped_by_criterion();
+      }
+      if (level.reached)
         copy_checkpoint(
             comm, inputs.solver.output.directory, level_directory(k + 1));
-        continue;
-      }
-      inputs.solver.checkpoint.resume = closing_started;
-      auto solver = MechanicsSolver<3>::create(comm, inputs);
-      solver->set_stop_criterion(
-          [&solver, b = b, g = g, target = forces[k]]()
-          {
-            const auto &latest = solver->contact_force_history().back();
-            return latest.forces[b][g].normal_force() >= target;
-          });
-      solver->run();
-      closing_started     = true;
-      const auto &latest  = solver->contact_force_history().back();
-      level.reached_force = latest.forces[b][g].normal_force();
-      level.time          = latest.time;
-      level.reached       = solver->stopped_by_criterion();
-      if (!level.reached)
-        break; // the closure ended below this level and all above it
-      copy_checkpoint(
-          comm, inputs.solver.output.directory, level_directory(k + 1));
+      record(level, k + 1);
+      levels.push_back(level);
     }
     return levels;
   }
 
   void PullSweepStudy::pull(const KinematicsData &kinematics,
                             const unsigned int    k,
-                            FeGripLevel          &level)
+                            FeGripLevel          &level,
+                            const double          friction)
   {
     const auto &indentation = kinematics.phase("indentation");
     const auto &pull_phase  = kinematics.phase("pull");
@@ -196,6 +313,8 @@ namespace softgrasp
     inputs.solver.output.directory  = level_directory(k);
     inputs.solver.checkpoint.resume = true;
     inputs.add_resume_setting("Study/Sweep", "grasp-and-pull");
+    if (friction >= 0) // the resume settings keep the closing's
+      inputs.contact.friction_coefficient = friction;
     auto solver = MechanicsSolver<3>::create(comm, inputs);
     try
     {
@@ -213,19 +332,90 @@ namespace softgrasp
                                        solver->contact_force_history());
     // Keep the pull's records only (time from the level's start).
     for (auto &link : level.links)
-    {
-      LinkForceHistory kept;
-      kept.link = link.link;
-      for (std::size_t i = 0; i < link.time.size(); ++i)
-        if (link.time[i] >= level.time - 1e-12)
+      link = link.since(level.time);
+    record(level, k);
+  }
+
+  void write_grip_level(const FeGripLevel &level, const std::string &filename)
+  {
+    Hdf5Record::write(
+        filename,
+        [&](HDF5::File &file)
         {
-          kept.time.push_back(link.time[i] - level.time);
-          kept.force.push_back(link.force[i]);
-          kept.normal.push_back(link.normal[i]);
-          kept.lateral.push_back(link.lateral[i]);
-          kept.friction.push_back(link.friction[i]);
-        }
-      link = kept;
-    }
+          file.set_attribute("schema", std::string("softgrasp grip level"));
+          file.set_attribute("settings", level.settings);
+          file.set_attribute("target_force", level.target_force);
+          file.set_attribute("reached_force", level.reached_force);
+          file.set_attribute("time", level.time);
+          file.set_attribute("reached", int(level.reached));
+          file.set_attribute("pulled", int(level.pulled));
+          // HDF5 refuses empty strings: a failure is stored with a prefix
+          file.set_attribute("failure", "failure: " + level.failure);
+          file.set_attribute("balance", level.balance);
+          file.set_attribute("penetration", level.penetration);
+          file.set_attribute("links", int(level.links.size()));
+          for (std::size_t i = 0; i < level.links.size(); ++i)
+          {
+            const auto &link  = level.links[i];
+            auto        group = file.create_group("link_" + std::to_string(i));
+            group.set_attribute("name", link.link);
+            std::vector<double> force;
+            for (const auto &f : link.force)
+              force.insert(force.end(), {f[0], f[1], f[2]});
+            Hdf5Record::write_vector(group, "force", force);
+            for (const auto &[name, values] : series(link))
+              Hdf5Record::write_vector(group, name, *values);
+          }
+        });
+  }
+
+  FeGripLevel read_grip_level(const std::string &filename)
+  {
+    FeGripLevel level;
+    Hdf5Record::read(
+        filename,
+        "delete it (and its level's directory) to compute the level again",
+        [&](const Hdf5Record::Reader &file)
+        {
+          const auto number = [&](const std::string &name)
+          { return file.number_attribute("", name); };
+          if (file.string_attribute("", "schema") != "softgrasp grip level")
+            throw std::runtime_error("it is not a grip level record");
+          level.settings      = file.string_attribute("", "settings");
+          level.target_force  = number("target_force");
+          level.reached_force = number("reached_force");
+          level.time          = number("time");
+          level.reached       = number("reached") != 0;
+          level.pulled        = number("pulled") != 0;
+          level.failure       = file.string_attribute("", "failure").substr(9);
+          level.balance       = number("balance");
+          level.penetration   = number("penetration");
+          const int n         = static_cast<int>(number("links"));
+          for (int i = 0; i < n; ++i)
+          {
+            const std::string group = "link_" + std::to_string(i);
+            LinkForceHistory  link;
+            link.link               = file.string_attribute(group, "name");
+            link.time               = file.vector(group + "/time");
+            const std::size_t m     = link.time.size();
+            const auto        force = file.vector(group + "/force");
+            if (force.size() != 3 * m)
+              throw std::runtime_error("link " + link.link +
+                                       " has datasets of different lengths");
+            for (const auto &[name, values] : series(link))
+            {
+              *values = file.vector(group + "/" + name);
+              if (values->size() != m)
+                throw std::runtime_error("link " + link.link +
+                                         " has datasets of different "
+                                         "lengths");
+            }
+            for (std::size_t j = 0; j < m; ++j)
+              link.force.emplace_back(
+                  force[3 * j], force[3 * j + 1], force[3 * j + 2]);
+            level.links.push_back(link);
+          }
+        });
+    return level;
   }
 } // namespace softgrasp

@@ -1,11 +1,8 @@
-#include <cstdio>
 #include <deal.II/base/hdf5.h>
 #include <deal.II/lac/full_matrix.h>
-#include <hdf5.h>
 #include <map>
-#include <softgrasp/base/atomic_file.h>
-#include <softgrasp/base/fatal_error.h>
 #include <softgrasp/io/hdf5_history.h>
+#include <softgrasp/io/hdf5_record.h>
 
 namespace softgrasp
 {
@@ -54,71 +51,59 @@ namespace softgrasp
       datasets[{group, quantity}].push_back(c);
     }
 
-    const std::string temporary = AtomicFile::temporary_name(filename);
-    try
-    {
-      HDF5::File file(temporary, HDF5::File::FileAccessMode::create);
-      file.set_attribute("schema", schema);
-      std::map<std::string, HDF5::Group> groups;
-      const auto group_of = [&](const std::string &path) -> HDF5::Group &
-      {
-        auto it = groups.find(path);
-        if (it != groups.end())
-          return it->second;
-        // create the nested groups of "a/b" one level at a time
-        HDF5::Group *parent = &file;
-        std::string  so_far;
-        for (const auto &part : Utilities::split_string_list(path, '/'))
+    Hdf5Record::write(
+        filename,
+        [&](HDF5::File &file)
         {
-          so_far += (so_far.empty() ? "" : "/") + part;
-          auto found = groups.find(so_far);
-          if (found == groups.end())
-            found = groups.emplace(so_far, parent->create_group(part)).first;
-          parent = &found->second;
-        }
-        return *parent;
-      };
-      const unsigned int steps = table.rows.size();
-      for (const auto &[key, columns] : datasets)
-      {
-        HDF5::Group &group = key.first.empty() ? file : group_of(key.first);
-        FullMatrix<double> values(steps, columns.size());
-        for (unsigned int r = 0; r < steps; ++r)
-          for (unsigned int k = 0; k < columns.size(); ++k)
-            values(r, k) = table.rows[r][columns[k]];
-        if (columns.size() == 1)
-        {
-          std::vector<double> column(steps);
-          for (unsigned int r = 0; r < steps; ++r)
-            column[r] = values(r, 0);
-          auto dataset = group.create_dataset<double>(key.second, {steps});
-          if (steps > 0)
-            dataset.write(column);
-          dataset.set_attribute("unit", unit_of(key.second, dim));
-        }
-        else
-        {
-          auto dataset = group.create_dataset<double>(
-              key.second, {steps, static_cast<unsigned int>(columns.size())});
-          if (steps > 0)
-            dataset.write(values);
-          dataset.set_attribute("unit", unit_of(key.second, dim));
-        }
-      }
-    }
-    catch (const std::exception &e)
-    {
-      std::remove(temporary.c_str());
-      throw std::runtime_error(AtomicFile::write_error(
-          filename, "the HDF5 library failed: " + error_message(e)));
-    }
-    // Errors at closing are only printed by HDF5: check the file.
-    if (H5Fis_hdf5(temporary.c_str()) <= 0)
-    {
-      std::remove(temporary.c_str());
-      throw std::runtime_error(
-          AtomicFile::write_error(filename, "the HDF5 file is incomplete"));
-    }
-    AtomicFile::commit(temporary, filename);
+          file.set_attribute("schema", schema);
+          std::map<std::string, HDF5::Group> groups;
+          const auto group_of = [&](const std::string &path) -> HDF5::Group &
+          {
+            auto it = groups.find(path);
+            if (it != groups.end())
+              return it->second;
+            // create the nested groups of "a/b" one level at a time
+            HDF5::Group *parent = &file;
+            std::string  so_far;
+            for (const auto &part : Utilities::split_string_list(path, '/'))
+            {
+              so_far += (so_far.empty() ? "" : "/") + part;
+              auto found = groups.find(so_far);
+              if (found == groups.end())
+                found =
+                    groups.emplace(so_far, parent->create_group(part)).first;
+              parent = &found->second;
+            }
+            return *parent;
+          };
+          const unsigned int steps = table.rows.size();
+          for (const auto &[key, columns] : datasets)
+          {
+            HDF5::Group &group = key.first.empty() ? file : group_of(key.first);
+            FullMatrix<double> values(steps, columns.size());
+            for (unsigned int r = 0; r < steps; ++r)
+              for (unsigned int k = 0; k < columns.size(); ++k)
+                values(r, k) = table.rows[r][columns[k]];
+            if (columns.size() == 1)
+            {
+              std::vector<double> column(steps);
+              for (unsigned int r = 0; r < steps; ++r)
+                column[r] = values(r, 0);
+              auto dataset = group.create_dataset<double>(key.second, {steps});
+              if (steps > 0)
+                dataset.write(column);
+              dataset.set_attribute("unit", unit_of(key.second, dim));
+            }
+            else
+            {
+              auto dataset = group.create_dataset<double>(
+                  key.second,
+                  {steps, static_cast<unsigned int>(columns.size())});
+              if (steps > 0)
+                dataset.write(values);
+              dataset.set_attribute("unit", unit_of(key.second, dim));
+            }
+          }
+        });
   }
 } // namespace softgrasp

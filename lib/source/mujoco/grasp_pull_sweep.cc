@@ -65,6 +65,16 @@ namespace softgrasp
                       "a robot arm carrying the hand holds its path; the "
                       "scene's own, softer servo would lag behind by the "
                       "drag over its gain. Unit: N/m.");
+    prm.declare_entry("Pull friction coefficient",
+                      "-1",
+                      Patterns::Double(-1),
+                      "Coulomb's friction coefficient of the finite element "
+                      "pulls (each a branch from its level's closed state); "
+                      "-1: 'Contact/Friction coefficient', as in the "
+                      "closing. 0 leaves the drag of the tissue's pressure "
+                      "on the links alone (on a straight limb none: "
+                      "translation invariance). MuJoCo's pulls keep their "
+                      "geoms' friction. Unit: 1.");
     prm.declare_entry("Pull samples",
                       "40",
                       Patterns::Integer(2, 10000),
@@ -118,6 +128,7 @@ namespace softgrasp
     rigid.force_tolerance = section.get_positive("Force tolerance", "1");
     rigid.maximum_closure = section.get_positive("Maximum closure", "rad");
     rigid.slide_fraction  = section.get_positive("Slide fraction", "1");
+    pull_friction         = prm.get_double("Pull friction coefficient");
     prm.leave_subsection();
     if (rigid.lowest_force >= rigid.highest_force)
       throw InputError("'Grasp-and-pull sweep/Lowest grip force' (" +
@@ -134,6 +145,17 @@ namespace softgrasp
     ArmGraspStudy::declare_parameters(prm);
     SweepParameters::declare_parameters(prm);
   }
+
+  namespace
+  {
+    /// The text of @p file ("" if it cannot be read: the rigid stage then
+    /// reports the missing scene).
+    std::string text_of(const std::string &file)
+    {
+      std::ifstream in(file);
+      return std::string(std::istreambuf_iterator<char>(in), {});
+    }
+  } // namespace
 
   GraspPullSweep::GraspPullSweep(MPI_Comm           comm,
                                  ParameterHandler  &prm,
@@ -152,40 +174,88 @@ namespace softgrasp
     // pulls replay its motion.
     grasp.pull.distance = sweep.rigid.pull_distance;
     grasp.pull.duration = sweep.rigid.pull_distance / sweep.rigid.pull_speed;
+    // The rigid stage's inputs: every setting but the output's (a finite
+    // element setting changed between runs costs only a repeated rigid
+    // stage of a few seconds), and the hand's scene file.
+    settings = study.settings_text() + "hand:\n" + text_of(grasp.scene_file);
   }
 
   int GraspPullSweep::main(int argc, char **argv)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
-    const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
-    const auto     arguments =
-        ProgramArguments::parse(argc, argv, "grasp_pull_sweep.prm");
+    const MPI_Comm comm      = MPI_COMM_WORLD;
+    const bool     root      = Utilities::MPI::this_mpi_process(comm) == 0;
+    const auto     arguments = ProgramArguments::parse(
+        argc,
+        argv,
+        "grasp_pull_sweep.prm",
+        {{"--close",
+              "",
+              "only the rigid stage and the finite element closing to every "
+                  "level (a cluster run's first job)"},
+             {"--level",
+              "k",
+              "only level k: what it needs of the rigid stage and the closing, "
+                  "then its pull (a job array's task)"},
+             {"--collect",
+              "",
+              "only merge the levels' records into the tables and the figure"}});
     const int exit_code = arguments.handle(
         argv[0],
         "The grasp-and-pull sweep: MuJoCo's grasp and pull at every grip "
-        "level, then the finite element closing and pulls "
-        "(doc/studies.md).",
+        "level, then the finite element closing and pulls (doc/studies.md). "
+        "A killed sweep resumes where it stopped.",
         root);
     if (exit_code >= 0)
       return exit_code;
-    const bool              print    = arguments.print_parameters;
-    const std::string      &filename = arguments.parameter_file;
     const ErrorCommunicator error_comm(comm);
     try
     {
+      if (arguments.options.size() > 1)
+        throw InputError("--close, --level and --collect exclude each other. "
+                         "Fix: give one of them, or none for the whole "
+                         "sweep.");
       ParameterHandler prm;
       declare_parameters(prm);
-      SolverProgram::read_parameters<3>(prm, filename);
-      if (print)
+      SolverProgram::read_parameters<3>(prm, arguments.parameter_file);
+      if (arguments.print_parameters)
       {
         if (root)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return 0;
       }
       PullSweepStudy study(comm, prm);
-      GraspPullSweep sweep(comm, prm, filename, study);
+      GraspPullSweep sweep(comm, prm, arguments.parameter_file, study);
+      unsigned int   level = 0;
+      if (arguments.has("--level"))
+      {
+        const std::string &value  = arguments.options.at("--level");
+        const unsigned int levels = sweep.parameters().rigid.levels;
+        try
+        {
+          level = std::stoul(value);
+        }
+        catch (const std::exception &)
+        {
+        }
+        if (level < 1 || level > levels ||
+            value.find_first_not_of("0123456789") != std::string::npos)
+          throw InputError("--level " + value + " is not a level of this " +
+                           "sweep. Fix: give a number from 1 to " +
+                           std::to_string(levels) +
+                           " ('Grasp-and-pull sweep/Levels').");
+      }
       sweep.run_rigid(std::cout);
-      sweep.run_fe(std::cout);
+      if (arguments.has("--collect"))
+        sweep.collect(std::cout);
+      else if (arguments.has("--close"))
+        sweep.close(std::cout);
+      else if (level > 0)
+      {
+        sweep.close(std::cout, level);
+        sweep.pull(level, std::cout);
+      }
+      else
+        sweep.run_fe(std::cout);
     }
     catch (const std::exception &e)
     {
@@ -207,32 +277,40 @@ namespace softgrasp
                            "' (" + code.message() +
                            "). Fix: choose an 'Output/Directory' in a "
                            "writable place.");
-        GraspParameters parameters = grasp;
-        parameters.scene_file =
-            study.rigid_scene(parameters.scene_file, directory);
-        const auto      start = std::chrono::steady_clock::now();
-        GraspSimulation simulation(parameters, log);
-        const auto      data = simulation.run();
-        write_kinematics_file(data, study.kinematics_file(directory));
-        rigid = simulation.grip_levels(sweep.rigid);
-        log << "Rigid stage (MuJoCo): "
-            << std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                             start)
-                   .count()
-            << " s wall time\n";
-        write_rigid_levels(rigid,
-                           directory + "/sweep_rigid_levels.csv",
-                           directory + "/sweep_rigid_pulls.csv");
-        for (const auto &level : rigid)
-          targets.push_back(level.target_force);
-        friction = rigid.empty() ? 0 : rigid.front().friction;
-        write_sweep_figure(grip_link_points(rigid, sweep.rigid.grip_link),
-                           {},
-                           friction,
-                           sweep.grip_label,
-                           directory,
-                           "sweep",
-                           log);
+        const std::string file = directory + "/sweep_rigid.h5";
+        if (std::filesystem::exists(file) &&
+            std::filesystem::exists(study.kinematics_file(directory)))
+          record = read_rigid_record(file);
+        if (record.settings == settings)
+          log << "Rigid stage: the results in " << file
+              << " are of these settings; not run again\n";
+        else
+        {
+          GraspParameters parameters = grasp;
+          parameters.scene_file =
+              study.rigid_scene(parameters.scene_file, directory);
+          const auto      start = std::chrono::steady_clock::now();
+          GraspSimulation simulation(parameters, log);
+          const auto      data = simulation.run();
+          write_kinematics_file(data, study.kinematics_file(directory));
+          rigid = simulation.grip_levels(sweep.rigid);
+          log << "Rigid stage (MuJoCo): "
+              << std::chrono::duration<double>(
+                     std::chrono::steady_clock::now() - start)
+                     .count()
+              << " s wall time\n";
+          write_rigid_levels(rigid,
+                             directory + "/sweep_rigid_levels.csv",
+                             directory + "/sweep_rigid_pulls.csv");
+          record          = RigidSweepRecord();
+          record.settings = settings;
+          for (const auto &level : rigid)
+            record.targets.push_back(level.target_force);
+          record.friction = rigid.empty() ? 0 : rigid.front().friction;
+          record.points   = grip_link_points(rigid, sweep.rigid.grip_link);
+          write_rigid_record(record, file);
+          figure({}, log);
+        }
       }
       catch (const std::exception &e)
       {
@@ -242,277 +320,123 @@ namespace softgrasp
     error = Utilities::MPI::broadcast(comm, error, 0);
     if (!error.empty())
       throw InputError(error);
-    targets  = Utilities::MPI::broadcast(comm, targets, 0);
-    friction = Utilities::MPI::broadcast(comm, friction, 0);
+    record.targets  = Utilities::MPI::broadcast(comm, record.targets, 0);
+    record.friction = Utilities::MPI::broadcast(comm, record.friction, 0);
   }
 
-  void GraspPullSweep::run_fe(std::ostream &log)
+  void GraspPullSweep::close(std::ostream &log, const unsigned int up_to)
   {
     const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     const auto kinematics =
         read_kinematics_file(study.kinematics_file(directory));
+    std::vector<double> forces = record.targets;
+    if (up_to > 0 && up_to < forces.size())
+      forces.resize(up_to);
     const auto start = std::chrono::steady_clock::now();
-    fe = study.close_to_levels(kinematics, sweep.grip_label, targets);
-    for (std::size_t k = 0; k < fe.size(); ++k)
-    {
-      if (!fe[k].reached)
-      {
-        if (root)
-          log << "Level " << k + 1 << " (" << fe[k].target_force
-              << " N): not reached; the finite element closure ended at "
-              << fe[k].reached_force
-              << " N. Fix: raise 'Rigid environment/Indentation/Extra "
-                 "joint angle'.\n";
-        continue;
-      }
-      if (root)
-        log << "Level " << k + 1 << ": " << fe[k].reached_force
-            << " N at t = " << fe[k].time << " s of the closure; pulling\n";
-      study.pull(kinematics, k + 1, fe[k]);
-      if (root && !fe[k].pulled)
-        log << "Level " << k + 1 << ": the pull stopped: " << fe[k].failure
-            << "\n";
-    }
+    fe = study.close_to_levels(kinematics, sweep.grip_label, forces);
     if (!root)
       return;
-    log << "Finite element stage: "
+    for (std::size_t k = 0; k < fe.size(); ++k)
+      if (fe[k].reached)
+        log << "Level " << k + 1 << " (" << fe[k].target_force
+            << " N): reached " << fe[k].reached_force
+            << " N at t = " << fe[k].time << " s of the closure\n";
+      else
+        log << "Level " << k + 1 << " (" << fe[k].target_force
+            << " N): not reached; the finite element closure ended at "
+            << fe[k].reached_force
+            << " N. Fix: raise 'Rigid environment/Indentation/Extra "
+               "joint angle'.\n";
+    log << "Finite element closing: "
         << std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                          start)
                .count()
         << " s wall time\n";
+  }
+
+  void GraspPullSweep::pull(const unsigned int k, std::ostream &log)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    if (k < 1 || k > fe.size())
+      throw InputError("Level " + std::to_string(k) +
+                       " has not been closed to. Fix: run the closing "
+                       "(grasp_pull_sweep --close) first.");
+    FeGripLevel &level = fe[k - 1];
+    if (level.finished())
+    {
+      if (root)
+        log << "Level " << k << ": finished ("
+            << (level.pulled     ? "pulled"
+                : !level.reached ? "not reached"
+                                 : "failed: " + level.failure)
+            << ", " << study.record_file(k) << "); not run again\n";
+      return;
+    }
+    if (root)
+      log << "Level " << k << ": " << level.reached_force
+          << " N at t = " << level.time << " s of the closure; pulling\n";
+    const auto start = std::chrono::steady_clock::now();
+    study.pull(read_kinematics_file(study.kinematics_file(directory)),
+               k,
+               level,
+               sweep.pull_friction);
+    if (root)
+      log << "Level " << k << ": "
+          << (level.pulled ? "pulled" : "the pull stopped: " + level.failure)
+          << " ("
+          << std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+                 .count()
+          << " s wall time)\n";
+  }
+
+  void GraspPullSweep::collect(std::ostream &log)
+  {
+    fe = study.recorded_levels(record.targets);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    for (std::size_t k = 0; k < record.targets.size(); ++k)
+      if (k >= fe.size())
+        log << "Level " << k + 1
+            << ": not closed to yet. Fix: grasp_pull_sweep --level " << k + 1
+            << "\n";
+      else if (!fe[k].finished())
+        log << "Level " << k + 1
+            << ": closed to, not pulled yet. Fix: grasp_pull_sweep --level "
+            << k + 1 << "\n";
+      else if (!fe[k].pulled && fe[k].reached)
+        log << "Level " << k + 1 << ": the pull stopped: " << fe[k].failure
+            << "\n";
     write_fe_levels(fe,
                     directory + "/sweep_fe_levels.csv",
                     directory + "/sweep_fe_pulls.csv");
-    write_sweep_figure(grip_link_points(rigid, sweep.rigid.grip_link),
-                       grip_link_points(fe, sweep.grip_label),
-                       friction,
+    figure(fe, log);
+  }
+
+  void GraspPullSweep::run_fe(std::ostream &log)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    close(log);
+    for (unsigned int k = 1; k <= fe.size(); ++k)
+      pull(k, log);
+    collect(log);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      log << "Finite element stage: "
+          << std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+                 .count()
+          << " s wall time\n";
+  }
+
+  void GraspPullSweep::figure(const std::vector<FeGripLevel> &levels,
+                              std::ostream                   &log) const
+  {
+    write_sweep_figure(record.points,
+                       grip_link_points(levels, sweep.grip_label),
+                       record.friction,
                        sweep.grip_label,
                        directory,
                        "sweep",
                        log);
-  }
-
-  namespace
-  {
-    double max_of(const std::vector<double> &v)
-    {
-      return v.empty() ? 0 : *std::max_element(v.begin(), v.end());
-    }
-
-    /// Mean of @p v over the records from half the last time on.
-    double second_half_mean(const std::vector<double> &time,
-                            const std::vector<double> &v)
-    {
-      double sum = 0;
-      int    n   = 0;
-      for (std::size_t i = 0; i < time.size(); ++i)
-        if (time[i] >= 0.5 * time.back())
-          sum += v[i], ++n;
-      return n > 0 ? sum / n : 0;
-    }
-  } // namespace
-
-  void write_rigid_levels(const std::vector<RigidGripLevel> &levels,
-                          const std::string                 &summary_file,
-                          const std::string                 &pulls_file)
-  {
-    std::ostringstream summary;
-    summary << std::setprecision(8)
-            << "level,link,target_force,reached_force,closure,matched,"
-               "normal_end,normal_mean,lateral_end,lateral_mean,lateral_max,"
-               "drag_end,drag_mean,drag_max,slip_speed_mean,slides\n";
-    std::ostringstream pulls;
-    pulls << std::setprecision(8) << "level,time,slide";
-    if (!levels.empty())
-      for (const auto &link : levels.front().links)
-        for (const char *part : {"normal", "lateral", "drag", "slip_speed"})
-          pulls << ',' << link.body << '/' << link.geom << ':' << part;
-    pulls << '\n';
-    for (std::size_t k = 0; k < levels.size(); ++k)
-    {
-      const auto &level = levels[k];
-      for (const auto &link : level.links)
-        summary << k + 1 << ',' << link.body << '/' << link.geom << ','
-                << level.target_force << ',' << level.reached_force << ','
-                << level.closure << ',' << level.matched << ','
-                << link.normal.back() << ',' << link.normal_mean << ','
-                << link.lateral.back() << ',' << link.lateral_mean << ','
-                << max_of(link.lateral) << ',' << link.drag.back() << ','
-                << link.drag_mean << ',' << max_of(link.drag) << ','
-                << link.slip_mean << ',' << link.slides << '\n';
-      for (std::size_t i = 0; i < level.time.size(); ++i)
-      {
-        pulls << k + 1 << ',' << level.time[i] << ',' << level.slide[i];
-        for (const auto &link : level.links)
-          pulls << ',' << link.normal[i] << ',' << link.lateral[i] << ','
-                << link.drag[i] << ',' << link.slip_speed[i];
-        pulls << '\n';
-      }
-    }
-    AtomicFile::write(summary_file, summary.str());
-    AtomicFile::write(pulls_file, pulls.str());
-  }
-
-  std::vector<SweepPoint>
-  grip_link_points(const std::vector<RigidGripLevel> &levels,
-                   const std::string                 &grip_geom)
-  {
-    std::vector<SweepPoint> points;
-    for (std::size_t k = 0; k < levels.size(); ++k)
-      for (const auto &link : levels[k].links)
-        if (link.geom == grip_geom)
-        {
-          SweepPoint p;
-          p.level        = k + 1;
-          p.grip_force   = levels[k].reached_force;
-          p.normal_mean  = link.normal_mean;
-          p.lateral_mean = link.lateral_mean;
-          p.lateral_max  = max_of(link.lateral);
-          points.push_back(p);
-        }
-    return points;
-  }
-
-  std::vector<SweepPoint> grip_link_points(const std::vector<FeGripLevel> &fe,
-                                           const std::string &grip_label)
-  {
-    std::vector<SweepPoint> points;
-    for (std::size_t k = 0; k < fe.size(); ++k)
-      for (const auto &link : fe[k].links)
-        if (fe[k].pulled && link.link == grip_label && !link.time.empty())
-        {
-          SweepPoint p;
-          p.level         = k + 1;
-          p.grip_force    = fe[k].reached_force;
-          p.normal_mean   = second_half_mean(link.time, link.normal);
-          p.lateral_mean  = second_half_mean(link.time, link.lateral);
-          p.lateral_max   = max_of(link.lateral);
-          p.friction_mean = second_half_mean(link.time, link.friction);
-          points.push_back(p);
-        }
-    return points;
-  }
-
-  void write_fe_levels(const std::vector<FeGripLevel> &levels,
-                       const std::string              &summary_file,
-                       const std::string              &pulls_file)
-  {
-    std::ostringstream summary, pulls;
-    summary << std::setprecision(8)
-            << "level,link,target_force,reached_force,closure_time,pulled,"
-               "normal_end,normal_mean,lateral_end,lateral_mean,"
-               "friction_end,friction_mean\n";
-    pulls << std::setprecision(8)
-          << "level,link,time,normal,lateral,friction\n";
-    for (std::size_t k = 0; k < levels.size(); ++k)
-    {
-      const auto &level = levels[k];
-      for (const auto &link : level.links)
-      {
-        if (link.time.empty())
-          continue;
-        summary << k + 1 << ',' << link.link << ',' << level.target_force << ','
-                << level.reached_force << ',' << level.time << ','
-                << level.pulled << ',' << link.normal.back() << ','
-                << second_half_mean(link.time, link.normal) << ','
-                << link.lateral.back() << ','
-                << second_half_mean(link.time, link.lateral) << ','
-                << link.friction.back() << ','
-                << second_half_mean(link.time, link.friction) << '\n';
-        for (std::size_t i = 0; i < link.time.size(); ++i)
-          pulls << k + 1 << ',' << link.link << ',' << link.time[i] << ','
-                << link.normal[i] << ',' << link.lateral[i] << ','
-                << link.friction[i] << '\n';
-      }
-    }
-    AtomicFile::write(summary_file, summary.str());
-    AtomicFile::write(pulls_file, pulls.str());
-  }
-
-  void write_sweep_figure(const std::vector<SweepPoint> &rigid,
-                          const std::vector<SweepPoint> &fe,
-                          const double                   friction,
-                          const std::string             &grip_link,
-                          const std::string             &directory,
-                          const std::string             &base,
-                          std::ostream                  &log)
-  {
-    double       top    = 1;
-    unsigned int levels = 2;
-    {
-      std::ofstream out(directory + "/" + base + "_figure.dat");
-      out << "# grip link " << grip_link
-          << ": level, grip force at the level, then over the second half "
-             "of the pull the mean normal and lateral force and the third "
-             "value (rigid: the largest lateral force over the pull; finite "
-             "elements: the mean friction-only force), all in N\n"
-          << "# rigid simulator (MuJoCo)\n";
-      for (const auto &p : rigid)
-      {
-        out << p.level << ' ' << p.grip_force << ' ' << p.normal_mean << ' '
-            << p.lateral_mean << ' ' << p.lateral_max << '\n';
-        top    = std::max({top, p.normal_mean, p.lateral_mean});
-        levels = std::max(levels, p.level);
-      }
-      out << "\n\n# finite elements\n";
-      for (const auto &p : fe)
-      {
-        out << p.level << ' ' << p.grip_force << ' ' << p.normal_mean << ' '
-            << p.lateral_mean << ' ' << p.friction_mean << '\n';
-        top    = std::max({top, p.normal_mean, p.lateral_mean});
-        levels = std::max(levels, p.level);
-      }
-      if (fe.empty())
-        out << "-1 0 0 0 0\n"; // an empty block would stop gnuplot
-    }
-    const std::string data = "'" + base + "_figure.dat'";
-    {
-      std::ofstream gp(directory + "/" + base + "_figure.gnuplot");
-      gp << "set terminal pngcairo size 1500,700 noenhanced\n"
-         << "set output '" << AtomicFile::temporary_name(base + "_figure.png")
-         << "'\n"
-         << "set multiplot layout 1,2 title 'Grasp-and-pull sweep: forces "
-            "on "
-         << grip_link << " during the pull (means over its second half)'\n"
-         << "set grid\nset key bottom right\n"
-         << "set palette defined (0 'blue', 1 'red')\n"
-         << "set cblabel 'grip level'\nset cbrange [1:" << levels
-         << "]\nset cbtics 1\n"
-         << "set title 'lateral against normal force'\n"
-         << "set xlabel 'normal force (N)'\nset ylabel 'lateral force (N)'\n"
-         << "set xrange [0:" << 1.1 * top << "]\nset yrange [0:" << 1.1 * top
-         << "]\n"
-         << "plot " << friction << " * x with lines dt 2 lc rgb 'gray40' "
-         << "title 'mu N (mu = " << friction << ")', " << data
-         << " index 0 using 3:4 with lines lw 2 lc rgb '#1f77b4' title "
-            "'MuJoCo (rigid)', "
-         << data << " index 1 using ($1 > 0 ? $3 : NaN):4 with lines lw 2 "
-         << "lc rgb '#ff7f0e' title 'finite elements', " << data
-         << " index 0 using 3:4:1 with points pt 7 ps 1.5 lc palette "
-            "notitle, "
-         << data
-         << " index 1 using ($1 > 0 ? $3 : NaN):4:1 with points pt 5 ps 1.5 "
-            "lc palette notitle\n"
-         << "set title 'finite elements: lateral force = friction + tissue "
-            "pressure'\n"
-         << "set xlabel 'grip level'\nset ylabel 'force (N)'\n"
-         << "set xrange [0.5:" << levels + 0.5
-         << "]\nset yrange [0:*]\nset key top left\n"
-         << "set style fill solid 0.8\nset boxwidth 0.35\nset xtics 1\n";
-      if (fe.empty())
-        gp << "set label 1 'no finite element level pulled yet' at graph "
-              "0.5, 0.5 center\nplot NaN notitle\n";
-      else
-        gp << "plot " << data
-           << " index 1 using ($1 - 0.18):4 with boxes lc rgb "
-           << "'#ff7f0e' title 'lateral (all)', " << data
-           << " index 1 using ($1 + 0.18):5 with boxes lc rgb '#2ca02c' title "
-              "'friction-only part', "
-           << data << " index 1 using 1:3 with linespoints pt 7 lc rgb "
-           << "'black' title 'normal'\n";
-      gp << "unset multiplot\n";
-    }
-    run_gnuplot(
-        directory, base + "_figure.gnuplot", {base + "_figure.png"}, log);
   }
 } // namespace softgrasp

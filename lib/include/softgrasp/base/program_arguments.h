@@ -1,15 +1,27 @@
 #ifndef softgrasp_base_program_arguments_h
 #define softgrasp_base_program_arguments_h
 
+#include <map>
 #include <string>
+#include <vector>
 
 namespace softgrasp
 {
+  /// An option a program accepts beyond the common ones: "--name" alone,
+  /// or "--name value" if @p value names what follows (e.g. "k").
+  struct ProgramOption
+  {
+    std::string name;  ///< with the dashes: "--level"
+    std::string value; ///< "" for a flag, else the value's placeholder
+    std::string help;  ///< one line for --help
+  };
+
   /**
    * The command line of a study program:
-   *   program [--print-parameters] [--help | -h] [file.prm]
-   * parsed once. An unknown option ("-x") leaves an error message with
-   * the fix; the last file name wins; none gives the default file.
+   *   program [--print-parameters] [--help | -h] [options] [file.prm]
+   * parsed once. An unknown option ("-x") or an option without its value
+   * leaves an error message with the fix; the last file name wins; none
+   * gives the default file.
    */
   struct ProgramArguments
   {
@@ -17,9 +29,21 @@ namespace softgrasp
     bool        help             = false;
     std::string parameter_file;
     std::string error; ///< "" if the command line is valid
+    /// The program's own options that were given, with their values ("" for
+    /// a flag).
+    std::map<std::string, std::string> options;
 
     static ProgramArguments
-    parse(int argc, char **argv, const std::string &default_file);
+    parse(int                               argc,
+          char                            **argv,
+          const std::string                &default_file,
+          const std::vector<ProgramOption> &accepted = {});
+
+    /// Whether the option @p name ("--level") was given.
+    bool has(const std::string &name) const
+    {
+      return options.count(name) > 0;
+    }
 
     /**
      * What a program does with help or a bad command line: prints the
@@ -32,7 +56,8 @@ namespace softgrasp
                const bool         root) const;
 
   private:
-    std::string default_file;
+    std::string                default_file;
+    std::vector<ProgramOption> accepted;
   };
 } // namespace softgrasp
 

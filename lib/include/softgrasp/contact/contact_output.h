@@ -27,9 +27,12 @@ namespace softgrasp
     /// each node's tangential force (N). lateral_part - friction is the
     /// lateral resistance from pressure on the tissue wrapping the geom.
     Eigen::Vector3d friction = Eigen::Vector3d::Zero();
-    double          area     = 0; ///< contact area, deformed (m^2; m in 2D)
-    unsigned int    active   = 0; ///< closed nodes
-    unsigned int    slipping = 0; ///< sliding nodes
+    /// Sum over the patch of each node's normal force magnitude (N): with
+    /// Coulomb's law at every node, |friction| <= mu nodal_normal.
+    double       nodal_normal = 0;
+    double       area         = 0; ///< contact area, deformed (m^2; m in 2D)
+    unsigned int active       = 0; ///< closed nodes
+    unsigned int slipping     = 0; ///< sliding nodes
 
     /// Normal force magnitude: positive when the tissue pushes the geom
     /// against its reference normal, -n . F (N).

@@ -23,9 +23,17 @@ namespace softgrasp
     std::vector<double>          time;
     std::vector<Eigen::Vector3d> force;
     std::vector<double>          normal, lateral, friction;
+    /// Sum of the nodes' normal force magnitudes: Coulomb's law bounds
+    /// friction by mu times it (GeomContactForce::nodal_normal).
+    std::vector<double> nodal_normal;
+    /// Contact nodes on the link: closed, and of those sliding (counts).
+    std::vector<double> closed, slipping;
 
     /// The largest normal force over the history (N; 0 if empty).
     double largest_normal() const;
+
+    /// The entries from time @p start (s) on, their time counted from it.
+    LinkForceHistory since(const double start) const;
   };
 
   /// One LinkForceHistory per geom of @p bodies, from the solver's typed

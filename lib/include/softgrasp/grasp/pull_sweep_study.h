@@ -17,12 +17,27 @@ namespace softgrasp
     bool        reached       = false; ///< false: the closure ended below it
     bool        pulled        = false; ///< the pull ran to its end
     std::string failure;               ///< why the pull stopped, if it did
+    std::string settings; ///< PullSweepStudy::settings_text() of its run
     /// At the end of the pull: |sum F_links - R| / max |F_link| and the
     /// deepest penetration of a link (m).
     double balance = 0, penetration = 0;
     /// Every link's forces over the pull (time from the level's start).
     std::vector<LinkForceHistory> links;
+
+    /// Nothing is left to compute: pulled, failed, or not reachable.
+    bool finished() const
+    {
+      return pulled || !failure.empty() || !reached;
+    }
   };
+
+  /// Write @p level to @p filename (HDF5, whole or not at all; rank 0):
+  /// the record a resumed or collecting sweep reads back.
+  void write_grip_level(const FeGripLevel &level, const std::string &filename);
+
+  /// The level written by write_grip_level(); an InputError naming the
+  /// file and the fix if it is missing or damaged.
+  FeGripLevel read_grip_level(const std::string &filename);
 
   /**
    * The finite element half of the grasp-and-pull sweep on the arm (the
@@ -33,8 +48,10 @@ namespace softgrasp
    *    (directory <output>/fe_closing) stops at the first record where the
    *    grip link's normal force reaches each level's force; its checkpoint
    *    there is copied to <output>/level_<k>/checkpoint, and the run goes
-   *    on to the next level from it. A killed sweep resumes from the
-   *    closing checkpoint; levels already reached are not closed again.
+   *    on to the next level from it. Every level gets a record
+   *    (record_file()). A killed sweep reads the records and goes on from
+   *    the closing's latest checkpoint; levels with a record are not closed
+   *    again.
    *  - pull(k): from level k's checkpoint (directory <output>/level_<k>),
    *    every link moves on the recorded pull phase's motion, relative to
    *    where the pull started, applied to the link's pose at the level
@@ -49,23 +66,50 @@ namespace softgrasp
     /**
      * Close along the 'indentation' phase of @p kinematics until the
      * normal force on @p grip_link (body/geom) reaches each of @p forces
-     * (N, increasing). Returns one FeGripLevel per force.
+     * (N, increasing). Returns one FeGripLevel per force; levels with a
+     * record are read, not closed again.
      */
     std::vector<FeGripLevel> close_to_levels(const KinematicsData &kinematics,
                                              const std::string    &grip_link,
                                              const std::vector<double> &forces);
 
     /// The pull of @p level (1-based number @p k), which close_to_levels()
-    /// reached; fills its links, pulled and failure.
+    /// reached; fills its links, pulled and failure, and records it. A
+    /// killed pull resumes from its latest checkpoint. @p friction >= 0
+    /// replaces 'Contact/Friction coefficient' during the pull (a branch
+    /// from the level's state: 0 leaves only the tissue's pressure).
     void pull(const KinematicsData &kinematics,
               const unsigned int    k,
-              FeGripLevel          &level);
+              FeGripLevel          &level,
+              const double          friction = -1);
+
+    /// Every parameter but 'Output/...' as "path = value" lines: what the
+    /// results of a sweep depend on. Records carry it; a record of other
+    /// settings is refused.
+    const std::string &settings_text() const
+    {
+      return settings;
+    }
 
     /// <output>/level_<k> (k 1-based, two digits).
     std::string level_directory(const unsigned int k) const;
 
+    /// The record of level @p k: <output>/level_<k>/level.h5, written when
+    /// the closing reaches the level (or cannot) and again after its pull.
+    std::string record_file(const unsigned int k) const;
+
+    /// The records of the first levels of @p forces (N) that have one, in
+    /// order up to the first without; an InputError if a record is damaged
+    /// or was closed to another force.
+    std::vector<FeGripLevel>
+    recorded_levels(const std::vector<double> &forces) const;
+
   private:
-    std::string output; ///< the study's 'Output/Directory'
+    /// Write @p level as level @p k's record (rank 0; all ranks wait).
+    void record(const FeGripLevel &level, const unsigned int k) const;
+
+    std::string output;   ///< the study's 'Output/Directory'
+    std::string settings; ///< settings_text()
   };
 
   /**

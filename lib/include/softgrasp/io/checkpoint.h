@@ -79,8 +79,8 @@ namespace softgrasp
                   std::ostream &log) const;
 
     /// The manifest's format version (3: with the typed contact force
-    /// history in the state).
-    static constexpr unsigned int format_version = 3;
+    /// history in the state; 4: with each geom's nodal normal force).
+    static constexpr unsigned int format_version = 4;
 
   private:
     /// The checkpoint to resume from, validated on rank 0, on all ranks.

@@ -7,6 +7,7 @@
 #include <softgrasp/grasp/pull_sweep_study.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
 #include <softgrasp/mujoco/grip_levels.h>
+#include <softgrasp/mujoco/sweep_output.h>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,8 @@ namespace softgrasp
     GripLevelSettings rigid; ///< levels, pull and MuJoCo's search settings
     /// The grip link as body/geom (the finite element label of the link).
     std::string grip_label;
+    /// Coulomb's mu of the finite element pulls (1); < 0: the contact's.
+    double pull_friction = -1;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
@@ -29,16 +32,19 @@ namespace softgrasp
    * normal force on the grip link), the hand pulls along the arm, in the
    * rigid simulator and on the finite element arm. See doc/studies.md.
    *
-   * run_rigid(): MuJoCo closes the hand to the equilibrium state on the
-   * study's scene and records the closing, indentation and pull phases
-   * (the kinematics file), then runs every level's grasp-and-pull
-   * (GraspSimulation::grip_levels()) and writes sweep_rigid_levels.csv,
-   * sweep_rigid_pulls.csv and the figure into the output directory.
-   *
-   * run_fe(): the finite element arm closes to the same grip forces
-   * (PullSweepStudy::close_to_levels()) and pulls at every level it
-   * reaches; writes sweep_fe_levels.csv, sweep_fe_pulls.csv and the figure
-   * with both lines.
+   * Its stages leave records in the output directory, so that a killed
+   * sweep resumes where it stopped and the levels can run as separate jobs:
+   *  - run_rigid(): MuJoCo closes the hand to the equilibrium state on the
+   *    study's scene and records the closing, indentation and pull phases
+   *    (the kinematics file), runs every level's grasp-and-pull
+   *    (GraspSimulation::grip_levels()) and writes sweep_rigid_levels.csv,
+   *    sweep_rigid_pulls.csv, the figure and sweep_rigid.h5; skipped when
+   *    sweep_rigid.h5 holds the results of the same settings;
+   *  - close(): the finite element arm closes to the levels' grip forces
+   *    (PullSweepStudy::close_to_levels(), one record per level);
+   *  - pull(k): level k's pull, unless its record says it is finished;
+   *  - collect(): every level's record into sweep_fe_levels.csv,
+   *    sweep_fe_pulls.csv and the figure with both lines.
    */
   class GraspPullSweep
   {
@@ -55,25 +61,40 @@ namespace softgrasp
                    PullSweepStudy           &study);
 
     /**
-     * The program: grasp_pull_sweep [--print-parameters] [file.prm]
-     * (default sweep file grasp_pull_sweep.prm). Errors become a message
-     * on stderr and exit code 1. MPI must be initialised by the caller.
+     * The program: grasp_pull_sweep [--close | --level k | --collect]
+     * [--print-parameters] [file.prm] (default sweep file
+     * grasp_pull_sweep.prm). Errors become a message on stderr and exit
+     * code 1. MPI must be initialised by the caller.
      */
     static int main(int argc, char **argv);
 
     /// The rigid stage (rank 0 works; errors reach every rank).
     void run_rigid(std::ostream &log);
 
-    /// The finite element stage (all ranks), after run_rigid().
+    /// The finite element closing to levels 1 to @p up_to (0: all), after
+    /// run_rigid(). Levels with a record are not closed again.
+    void close(std::ostream &log, const unsigned int up_to = 0);
+
+    /// Level @p k's pull (1-based), after close() reached it; a level
+    /// already finished (pulled, failed or not reached) is left as it is.
+    void pull(const unsigned int k, std::ostream &log);
+
+    /// Every level's record into the tables and the figure (rank 0
+    /// writes); the levels without one are listed in @p log.
+    void collect(std::ostream &log);
+
+    /// close(), every level's pull(), collect().
     void run_fe(std::ostream &log);
 
-    /// The finite element levels of the last run_fe().
+    /// The finite element levels: those of the last close() and pull(),
+    /// all of them after collect().
     const std::vector<FeGripLevel> &fe_levels() const
     {
       return fe;
     }
 
-    /// The rigid simulator's levels of the last run_rigid() (rank 0).
+    /// The rigid simulator's levels of the last run_rigid() that ran
+    /// MuJoCo (rank 0; empty if its record was reused).
     const std::vector<RigidGripLevel> &rigid_levels() const
     {
       return rigid;
@@ -84,81 +105,27 @@ namespace softgrasp
       return sweep;
     }
 
+    /// The grip forces of the levels (N; all ranks, after run_rigid()).
+    const std::vector<double> &grip_forces() const
+    {
+      return record.targets;
+    }
+
   private:
+    /// The figure with the rigid points and @p fe's (rank 0).
+    void figure(const std::vector<FeGripLevel> &fe, std::ostream &log) const;
+
     MPI_Comm                    comm;
     PullSweepStudy             &study;
     GraspParameters             grasp;
     SweepParameters             sweep;
     std::string                 directory; ///< 'Output/Directory'
+    std::string                 settings;  ///< what the rigid stage reads
     std::vector<RigidGripLevel> rigid;
-    std::vector<double>         targets;      ///< N, every level (all ranks)
-    double                      friction = 0; ///< MuJoCo's, for the figure
+    RigidSweepRecord            record; ///< of the rigid stage, all ranks
     std::vector<FeGripLevel>    fe;
   };
 
-  /**
-   * The rigid simulator's grip levels as tables:
-   *  - @p summary_file: one row per level and link: the target and reached
-   *    grip force and the closure of the level, then the link's normal,
-   *    lateral and drag force at the end of the pull, their means over the
-   *    second half of it and their maxima over it, its slip speed at the
-   *    end and whether it slides;
-   *  - @p pulls_file: every sample of every pull (level, time, slide, then
-   *    per link normal, lateral, drag and slip speed).
-   * Both written whole or not at all (AtomicFile). Units: N, m, s, rad.
-   */
-  void write_rigid_levels(const std::vector<RigidGripLevel> &levels,
-                          const std::string                 &summary_file,
-                          const std::string                 &pulls_file);
-
-  /// One grip level's point of the sweep's figure (N): the grip force the
-  /// level reached, and the grip link's normal and lateral force averaged
-  /// over the second half of the pull (steady sliding or sticking) and the
-  /// largest lateral force over the pull.
-  struct SweepPoint
-  {
-    unsigned int level = 0;
-    double grip_force = 0, normal_mean = 0, lateral_mean = 0, lateral_max = 0;
-    double friction_mean = 0; ///< finite elements: friction-only part
-  };
-
-  /// The grip link's points of @p levels (one per level).
-  std::vector<SweepPoint>
-  grip_link_points(const std::vector<RigidGripLevel> &levels,
-                   const std::string                 &grip_geom);
-
-  /// The grip link's points of the finite element levels that were pulled
-  /// (means over the second half of the pull).
-  std::vector<SweepPoint> grip_link_points(const std::vector<FeGripLevel> &fe,
-                                           const std::string &grip_label);
-
-  /**
-   * The finite element levels as tables: @p summary_file, one row per level
-   * and link (target and reached grip force, closure time, whether pulled,
-   * the link's normal, lateral and friction-only force at the end of the
-   * pull and their means over its second half); @p pulls_file, every
-   * record of every pull. Units: N, s.
-   */
-  void write_fe_levels(const std::vector<FeGripLevel> &levels,
-                       const std::string              &summary_file,
-                       const std::string              &pulls_file);
-
-  /**
-   * The sweep's figure (PNG, as the paper's fig. 10) in @p directory:
-   * lateral against normal force on the grip link, the rigid simulator's
-   * levels as one line and the finite element levels as another, points
-   * coloured by level, with the line mu N; a second panel splits the
-   * finite element lateral force into its friction-only part and the rest
-   * (pressure of the tissue against the link) per level. Data in
-   * <base>_figure.dat, the script <base>_figure.gnuplot.
-   */
-  void write_sweep_figure(const std::vector<SweepPoint> &rigid,
-                          const std::vector<SweepPoint> &fe,
-                          const double                   friction,
-                          const std::string             &grip_link,
-                          const std::string             &directory,
-                          const std::string             &base,
-                          std::ostream                  &log);
 } // namespace softgrasp
 
 #endif
