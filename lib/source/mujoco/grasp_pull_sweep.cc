@@ -372,6 +372,19 @@ namespace softgrasp
             << ", " << study.record_file(k) << "); not run again\n";
       return;
     }
+    if (k > 1 && fe[k - 2].pulled && fe[k - 2].time == level.time)
+    { // the closing reached both levels in one state: the same pull
+      const FeGripLevel &below = fe[k - 2];
+      level.pulled             = true;
+      level.balance            = below.balance;
+      level.penetration        = below.penetration;
+      level.links              = below.links;
+      study.record(level, k);
+      if (root)
+        log << "Level " << k << ": the state of level " << k - 1
+            << ", whose pull it shares\n";
+      return;
+    }
     if (root)
       log << "Level " << k << ": " << level.reached_force
           << " N at t = " << level.time << " s of the closure; pulling\n";

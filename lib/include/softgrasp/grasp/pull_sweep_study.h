@@ -104,10 +104,10 @@ namespace softgrasp
     std::vector<FeGripLevel>
     recorded_levels(const std::vector<double> &forces) const;
 
-  private:
     /// Write @p level as level @p k's record (rank 0; all ranks wait).
     void record(const FeGripLevel &level, const unsigned int k) const;
 
+  private:
     std::string output;   ///< the study's 'Output/Directory'
     std::string settings; ///< settings_text()
   };

@@ -76,7 +76,9 @@ namespace softgrasp
     void close(std::ostream &log, const unsigned int up_to = 0);
 
     /// Level @p k's pull (1-based), after close() reached it; a level
-    /// already finished (pulled, failed or not reached) is left as it is.
+    /// already finished (pulled, failed or not reached) is left as it is,
+    /// and one that the closing reached in the state of level k - 1 (the
+    /// force rose past both between two records) takes that level's pull.
     void pull(const unsigned int k, std::ostream &log);
 
     /// Every level's record into the tables and the figure (rank 0
