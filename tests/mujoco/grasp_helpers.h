@@ -50,6 +50,16 @@ namespace softgrasp_tests
       prm.leave_subsection();
   }
 
+  /// The coarse layered limb: 16 cells around, 1, 1, 1, 2 radially, 4
+  /// along the grasp zone, no fascia (its thin cells set the explicit step).
+  inline void set_coarse_limb(dealii::ParameterHandler &prm)
+  {
+    set(prm, {"Mesh", "Layered limb"}, "Circumferential cells", "16");
+    set(prm, {"Mesh", "Layered limb"}, "Radial cells", "1, 1, 1, 2");
+    set(prm, {"Mesh", "Layered limb"}, "Grasp zone cells", "4");
+    set(prm, {"Mesh", "Layered limb"}, "Fascia thickness", "0");
+  }
+
   /// The shipped arm_grasp.prm on a coarse limb (16 cells around, no
   /// fascia: its thin cells set the explicit step), without pictures, a
   /// target force or VTU output, writing into @p directory.
@@ -60,10 +70,7 @@ namespace softgrasp_tests
     softgrasp::ArmGraspStudy::declare_parameters(prm);
     softgrasp::SolverProgram::read_parameters<3>(
         prm, PARAMETER_FILES "/arm_grasp.prm");
-    set(prm, {"Mesh", "Layered limb"}, "Circumferential cells", "16");
-    set(prm, {"Mesh", "Layered limb"}, "Radial cells", "1, 1, 1, 2");
-    set(prm, {"Mesh", "Layered limb"}, "Grasp zone cells", "4");
-    set(prm, {"Mesh", "Layered limb"}, "Fascia thickness", "0");
+    set_coarse_limb(prm);
     set(prm, {"Indentation study"}, "Pictures", "false");
     set(prm, {"Indentation study"}, "Target normal force", "0");
     set(prm, {"Output"}, "Directory", directory);
@@ -72,8 +79,8 @@ namespace softgrasp_tests
 
   /**
    * The shipped grasp_pull_sweep.prm on the coarse limb, explicit, 2
-   * levels up to 30 N, a 5 mm pull, no VTU output, writing into @p directory; @p change
-   * may set more entries. The rigid stage has run (its log in log).
+   * levels up to 30 N, a 5 mm pull, no VTU output, writing into @p directory;
+   * @p change may set more entries. The rigid stage has run (its log in log).
    */
   struct CoarseSweep
   {
@@ -90,10 +97,7 @@ namespace softgrasp_tests
       GraspPullSweep::declare_parameters(prm);
       const std::string file = PARAMETER_FILES "/grasp_pull_sweep.prm";
       softgrasp::SolverProgram::read_parameters<3>(prm, file);
-      set(prm, {"Mesh", "Layered limb"}, "Circumferential cells", "16");
-      set(prm, {"Mesh", "Layered limb"}, "Radial cells", "1, 1, 1, 2");
-      set(prm, {"Mesh", "Layered limb"}, "Grasp zone cells", "4");
-      set(prm, {"Mesh", "Layered limb"}, "Fascia thickness", "0");
+      set_coarse_limb(prm);
       set(prm, {"Grasp-and-pull sweep"}, "Levels", "2");
       set(prm, {"Grasp-and-pull sweep"}, "Highest grip force", "30");
       set(prm, {"Grasp-and-pull sweep"}, "Pull distance", "0.005");
