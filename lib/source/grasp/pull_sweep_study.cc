@@ -238,7 +238,8 @@ namespace softgrasp
   std::vector<FeGripLevel>
   PullSweepStudy::close_to_levels(const KinematicsData      &kinematics,
                                   const std::string         &grip_link,
-                                  const std::vector<double> &forces)
+                                  const std::vector<double> &forces,
+                                  const double               step)
   {
     std::vector<FeGripLevel> levels = recorded_levels(forces);
     if (levels.size() == forces.size())
@@ -249,6 +250,12 @@ namespace softgrasp
     inputs.solver.time.end_time    = phase.end_time - phase.start_time;
     inputs.solver.output.directory = output + "/fe_closing";
     inputs.add_resume_setting("Study/Sweep", "grasp-and-pull");
+    if (step > 0)
+    {
+      inputs.solver.time.step_size = step;
+      inputs.solver.time.minimum_step =
+          std::min(step, inputs.solver.time.minimum_step);
+    }
     const auto [b, g] =
         link_index(inputs.bodies, grip_link, "Grasp-and-pull sweep/Grip link");
 

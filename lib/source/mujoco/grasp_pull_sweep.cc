@@ -75,6 +75,17 @@ namespace softgrasp
                       "on the links alone (on a straight limb none: "
                       "translation invariance). MuJoCo's pulls keep their "
                       "geoms' friction. Unit: 1.");
+    prm.declare_entry("Closing time step",
+                      "0",
+                      Patterns::Double(0),
+                      "Load step of the finite element closing (explicit: "
+                      "its record interval), where each level stops at the "
+                      "first step whose grip force is at or above the "
+                      "level's; 0: 'Time/Time step'. Levels closer than the "
+                      "force the closure adds in one step share a state "
+                      "(and a pull); a smaller step makes them distinct at "
+                      "the cost of more steps, and of one more pull per "
+                      "level that becomes distinct. Unit: s.");
     prm.declare_entry("Pull samples",
                       "40",
                       Patterns::Integer(2, 10000),
@@ -129,6 +140,7 @@ namespace softgrasp
     rigid.maximum_closure = section.get_positive("Maximum closure", "rad");
     rigid.slide_fraction  = section.get_positive("Slide fraction", "1");
     pull_friction         = prm.get_double("Pull friction coefficient");
+    closing_step = section.get_positive("Closing time step", "s", true);
     prm.leave_subsection();
     if (rigid.lowest_force >= rigid.highest_force)
       throw InputError("'Grasp-and-pull sweep/Lowest grip force' (" +
@@ -333,7 +345,8 @@ namespace softgrasp
     if (up_to > 0 && up_to < forces.size())
       forces.resize(up_to);
     const auto start = std::chrono::steady_clock::now();
-    fe = study.close_to_levels(kinematics, sweep.grip_label, forces);
+    fe               = study.close_to_levels(
+        kinematics, sweep.grip_label, forces, sweep.closing_step);
     if (!root)
       return;
     for (std::size_t k = 0; k < fe.size(); ++k)

@@ -243,8 +243,10 @@ namespace softgrasp
          << "]\nset yrange [0:*]\nset key top left\n"
          << "set style fill solid 0.8\nset boxwidth 0.35\nset xtics 1\n";
       if (fe.empty())
+        // an empty panel with its label (a curve above the range: gnuplot
+        // refuses to plot nothing)
         gp << "set label 1 'no finite element level pulled yet' at graph "
-              "0.5, 0.5 center\nplot NaN notitle\n";
+              "0.5, 0.5 center\nset yrange [0:1]\nplot 2 notitle\n";
       else
         gp << "plot " << data
            << " index 1 using ($1 - 0.18):4 with boxes lc rgb "

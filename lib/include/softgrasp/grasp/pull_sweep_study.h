@@ -66,12 +66,14 @@ namespace softgrasp
     /**
      * Close along the 'indentation' phase of @p kinematics until the
      * normal force on @p grip_link (body/geom) reaches each of @p forces
-     * (N, increasing). Returns one FeGripLevel per force; levels with a
-     * record are read, not closed again.
+     * (N, increasing), with load steps (explicit: records) of @p step
+     * (s; 0: 'Time/Time step'). Returns one FeGripLevel per force; levels
+     * with a record are read, not closed again.
      */
     std::vector<FeGripLevel> close_to_levels(const KinematicsData &kinematics,
                                              const std::string    &grip_link,
-                                             const std::vector<double> &forces);
+                                             const std::vector<double> &forces,
+                                             const double step = 0);
 
     /// The pull of @p level (1-based number @p k), which close_to_levels()
     /// reached; fills its links, pulled and failure, and records it. A

@@ -21,6 +21,9 @@ namespace softgrasp
     std::string grip_label;
     /// Coulomb's mu of the finite element pulls (1); < 0: the contact's.
     double pull_friction = -1;
+    /// Load step (explicit: record interval) of the finite element
+    /// closing (s); 0: 'Time/Time step'.
+    double closing_step = 0;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
