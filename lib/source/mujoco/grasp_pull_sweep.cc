@@ -169,6 +169,27 @@ namespace softgrasp
     }
   } // namespace
 
+  namespace
+  {
+    /// The level of "--level @p value": a number from 1 to @p levels, or an
+    /// InputError with the fix.
+    unsigned int level_number(const std::string &value,
+                              const unsigned int levels)
+    {
+      unsigned int level = 0;
+      if (!value.empty() &&
+          value.find_first_not_of("0123456789") == std::string::npos &&
+          value.size() < 4)
+        level = std::stoul(value);
+      if (level < 1 || level > levels)
+        throw InputError("--level " + value + " is not a level of this " +
+                         "sweep. Fix: give a number from 1 to " +
+                         std::to_string(levels) +
+                         " ('Grasp-and-pull sweep/Levels').");
+      return level;
+    }
+  } // namespace
+
   GraspPullSweep::GraspPullSweep(MPI_Comm           comm,
                                  ParameterHandler  &prm,
                                  const std::string &prm_file,
@@ -235,27 +256,13 @@ namespace softgrasp
           prm.print_parameters(std::cout, ParameterHandler::PRM);
         return 0;
       }
-      PullSweepStudy study(comm, prm);
-      GraspPullSweep sweep(comm, prm, arguments.parameter_file, study);
-      unsigned int   level = 0;
-      if (arguments.has("--level"))
-      {
-        const std::string &value  = arguments.options.at("--level");
-        const unsigned int levels = sweep.parameters().rigid.levels;
-        try
-        {
-          level = std::stoul(value);
-        }
-        catch (const std::exception &)
-        {
-        }
-        if (level < 1 || level > levels ||
-            value.find_first_not_of("0123456789") != std::string::npos)
-          throw InputError("--level " + value + " is not a level of this " +
-                           "sweep. Fix: give a number from 1 to " +
-                           std::to_string(levels) +
-                           " ('Grasp-and-pull sweep/Levels').");
-      }
+      PullSweepStudy     study(comm, prm);
+      GraspPullSweep     sweep(comm, prm, arguments.parameter_file, study);
+      const unsigned int level =
+          arguments.has("--level")
+              ? level_number(arguments.options.at("--level"),
+                             sweep.parameters().rigid.levels)
+              : 0;
       sweep.run_rigid(std::cout);
       if (arguments.has("--collect"))
         sweep.collect(std::cout);
