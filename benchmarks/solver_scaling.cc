@@ -3,14 +3,16 @@
 // bonded platens in 10 load steps, mixed u-p-J formulation, AMG-CG.
 //
 //   solver_scaling <cells per edge> [degree] [nu] [block: true|false]
-//                  [reuse AMG: true|false]
+//                  [reuse AMG: true|false] [augmentation]
 //   mpirun -np 2 solver_scaling 31
 //
 // Prints one line: DoFs, ranks, wall time per phase (TimerOutput), Newton
 // and linear iterations per step, and peak resident memory (sum over ranks).
 // Q1 DoFs = 3 (n+1)^3: n = 14 -> 10k, 31 -> 98k, 46 -> 311k.
 // Q2 DoFs = 3 (2n+1)^3: n = 7 -> 10k, 16 -> 108k, 23 -> 311k.
-// 'block' selects 'Linear solver/Block preconditioner' (default true).
+// 'block' selects 'Linear solver/Block preconditioner' (default true),
+// 'augmentation' sets 'Linear solver/Block preconditioner augmentation'
+// (default: the parameter's default).
 #include "../tests/solver_factory.h"
 
 #include <deal.II/base/mpi.h>
@@ -32,10 +34,14 @@ main(int argc, char **argv)
   const unsigned                   degree = argc > 2 ? std::stoi(argv[2]) : 1;
   const double                     nu = argc > 3 ? std::stod(argv[3]) : 0.49;
 
-  const bool block      = argc > 4 ? std::string(argv[4]) != "false" : true;
-  const bool reuse_amg  = argc > 5 ? std::string(argv[5]) != "false" : true;
-  const std::string prm = softgrasp_tests::compressed_block_prm(
+  const bool  block     = argc > 4 ? std::string(argv[4]) != "false" : true;
+  const bool  reuse_amg = argc > 5 ? std::string(argv[5]) != "false" : true;
+  std::string prm       = softgrasp_tests::compressed_block_prm(
       n, degree, nu, "iterative", block, "solver_scaling_output", reuse_amg);
+  if (argc > 6)
+    prm += std::string("subsection Linear solver\n set Block preconditioner "
+                       "augmentation = ") +
+           argv[6] + "\nend\n";
 
   ParameterHandler prm_handler;
   softgrasp::MechanicsSolver<3>::declare_parameters(prm_handler);

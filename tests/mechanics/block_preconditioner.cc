@@ -4,7 +4,7 @@
 // (tests/solver_factory.h), Q2-P1, the iterative solver with it
 //  - gives the direct solver's platen force, also with the AMG kept over
 //    Newton iterations ('Reuse AMG'),
-//  - needs CG iterations per Newton step that do not grow as nu -> 0.5
+//  - needs GMRES iterations per Newton step that do not grow as nu -> 0.5
 //    (kappa/mu from 29 to 5000) nor under refinement,
 // where AMG on the condensed tangent needs ever more.
 #include "../solver_factory.h"
@@ -58,7 +58,7 @@ main(int argc, char **argv)
   // mesh and Poisson's ratio.
   std::map<std::pair<unsigned int, double>, double> iterations;
   for (const unsigned int n : {4u, 6u})
-    for (const double nu : {0.45, 0.4999})
+    for (const double nu : {0.49, 0.4999})
     {
       const Result direct = run(n, nu, "direct", false);
       const Result block  = run(n, nu, "iterative", true);
@@ -98,13 +98,14 @@ main(int argc, char **argv)
       }
       std::cout << std::endl;
     }
-  // Flat in kappa/mu (29 -> 5000) and under refinement. The nu = 0.4999
-  // runs include a stagnating solve at an indefinite Newton iterate (the
-  // step is cut back), hence the factor 2.5.
+  // Nearly flat in kappa/mu (50 -> 5000) and under refinement. Without
+  // the augmented Lagrangian term in the displacement block ('Block
+  // preconditioner augmentation = 0') the nu = 0.4999 iterations are 63
+  // and 73 (n = 4, 6), which fails the refinement check.
   for (const unsigned int n : {4u, 6u})
-    SG_CHECK((iterations[{n, 0.4999}] < 2.5 * iterations[{n, 0.45}]),
+    SG_CHECK((iterations[{n, 0.4999}] < 2 * iterations[{n, 0.49}]),
              "block-preconditioned iterations grow with kappa/mu");
-  for (const double nu : {0.45, 0.4999})
-    SG_CHECK((iterations[{6, nu}] < 1.5 * iterations[{4, nu}]),
+  for (const double nu : {0.49, 0.4999})
+    SG_CHECK((iterations[{6, nu}] < 1.25 * iterations[{4, nu}]),
              "block-preconditioned iterations grow under refinement");
 }

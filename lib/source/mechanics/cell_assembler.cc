@@ -91,10 +91,12 @@ namespace softgrasp
   CellAssembler<dim>::CellAssembler(
       const MaterialLibrary         &materials,
       const BoundaryConditions<dim> &boundary_conditions,
-      const Formulation              formulation)
+      const Formulation              formulation,
+      const double                   augmentation)
       : materials(materials)
       , boundary_conditions(boundary_conditions)
       , formulation(formulation)
+      , augmentation(augmentation)
   {
   }
 
@@ -265,26 +267,46 @@ namespace softgrasp
           G(a, k) += d.basis(a, q) * scratch.J[q] * div * scratch.JxW[q];
       }
     FullMatrix<double> DG(nb, n);
-    d.condensed_kernel().mmult(DG, G);
-    FullMatrix<double> &target = split ? copy.volumetric : copy.matrix;
-    if (split)
+    if (!split)
     {
-      copy.volumetric.reinit(n, n);
-      copy.D      = d.condensed_kernel();
-      copy.volume = 0;
-      for (const double w : scratch.JxW)
-        copy.volume += w;
-      d.schur_inverse(1.0 / material.initial_shear_modulus(), copy.S_inverse);
+      d.condensed_kernel().mmult(DG, G);
+      add_lower_product(G, DG, copy.matrix);
+      return;
     }
+    // Split for the block preconditioner: the displacement block takes
+    // G^T W G (W = w M^-1, the augmented Lagrangian term), the coupling
+    // keeps G^T D G with D = A - W; their sum is K_con unchanged.
+    copy.volumetric.reinit(n, n);
+    copy.volume = 0;
+    for (const double w : scratch.JxW)
+      copy.volume += w;
+    const double mu = material.initial_shear_modulus();
+    const double w  = d.augment(augmentation * mu, mu, copy.D, copy.S_inverse);
+    copy.D.mmult(DG, G);
+    add_lower_product(G, DG, copy.volumetric);
     for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int l = 0; l < k; ++l)
+        copy.volumetric(l, k) = copy.volumetric(k, l);
+    if (w > 0)
+    {
+      d.mass_inverse().mmult(DG, G);
+      DG *= w;
+      add_lower_product(G, DG, copy.matrix);
+    }
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::add_lower_product(const FullMatrix<double> &G,
+                                             const FullMatrix<double> &DG,
+                                             FullMatrix<double>       &target)
+  {
+    for (unsigned int k = 0; k < G.n(); ++k)
       for (unsigned int l = 0; l <= k; ++l)
       {
         double value = 0;
-        for (unsigned int a = 0; a < nb; ++a)
+        for (unsigned int a = 0; a < G.m(); ++a)
           value += G(a, k) * DG(a, l);
         target(k, l) += value;
-        if (split && l < k)
-          target(l, k) += value;
       }
   }
 

@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <softgrasp/materials/material.h>
 #include <softgrasp/mechanics/element_dilatation.h>
 
@@ -89,9 +91,11 @@ namespace softgrasp
     // A = M^-1 K_JJ M^-1, K_JJ = int N U''(J~) N^T dV
     FullMatrix<double> &K_JJ = scratch;
     K_JJ.reinit(n_functions, n_functions);
+    curvature_min = std::numeric_limits<double>::max();
     for (unsigned int q = 0; q < n_points; ++q)
     {
       const double d2U = energy.second_derivative(J_tilde[q]);
+      curvature_min    = std::min(curvature_min, d2U);
       for (unsigned int a = 0; a < n_functions; ++a)
         for (unsigned int e = 0; e < n_functions; ++e)
           K_JJ(a, e) += basis(a, q) * d2U * basis(e, q) * JxW[q];
@@ -102,22 +106,36 @@ namespace softgrasp
   }
 
   template <int dim>
-  void ElementDilatation<dim>::schur_inverse(const double        compliance,
-                                             FullMatrix<double> &result) const
+  double ElementDilatation<dim>::augment(const double        gamma,
+                                         const double        mu,
+                                         FullMatrix<double> &shifted,
+                                         FullMatrix<double> &result) const
   {
-    // (A^-1 + c M)^-1 = A (I + c M A)^-1, which needs no inverse of A
-    // (A may be singular where U'' vanishes).
+    // K_JJ >= U''_min M, hence A = M^-1 K_JJ M^-1 >= U''_min M^-1 and
+    // A - w M^-1 >= A / 2 for w <= U''_min / 2.
+    const double w = std::max(0.0, std::min(gamma, 0.5 * curvature_min));
+    shifted        = kernel;
+    shifted.add(-w, M_inverse);
+    // (A'^-1 + c M)^-1 = A' (I + c M A')^-1, which needs no inverse of A'
+    // (A' may be singular where U'' vanishes).
     FullMatrix<double> T(n_functions, n_functions), T_inverse(T);
-    mass.mmult(T, kernel);
-    T *= compliance;
+    mass.mmult(T, shifted);
+    T *= 1.0 / (mu + w);
     for (unsigned int a = 0; a < n_functions; ++a)
       T(a, a) += 1;
     T_inverse.invert(T);
     result.reinit(n_functions, n_functions);
-    kernel.mmult(result, T_inverse);
+    shifted.mmult(result, T_inverse);
     for (unsigned int a = 0; a < n_functions; ++a)
       for (unsigned int e = a + 1; e < n_functions; ++e)
         result(a, e) = result(e, a) = 0.5 * (result(a, e) + result(e, a));
+    return w;
+  }
+
+  template <int dim>
+  const FullMatrix<double> &ElementDilatation<dim>::mass_inverse() const
+  {
+    return M_inverse;
   }
 
   template <int dim> unsigned int ElementDilatation<dim>::n_basis() const

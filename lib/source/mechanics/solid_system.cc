@@ -31,7 +31,10 @@ namespace softgrasp
       , quadrature(parameters.discretization.degree + 1)
       , face_quadrature(parameters.discretization.degree + 1)
       , dofs(tria)
-      , assembler(materials, bcs, parameters.discretization.formulation)
+      , assembler(materials,
+                  bcs,
+                  parameters.discretization.formulation,
+                  parameters.linear_solver.block_augmentation)
       , linear_solver(parameters.linear_solver)
   {
   }

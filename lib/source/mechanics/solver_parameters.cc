@@ -377,6 +377,19 @@ namespace softgrasp
         "kappa/mu). No effect on the direct solver or the displacement "
         "formulation.");
     prm.declare_entry(
+        "Block preconditioner augmentation",
+        "3",
+        Patterns::Double(0, 1000),
+        "Block preconditioner: the augmented Lagrangian weight gamma. The "
+        "displacement block on which the AMG is built takes "
+        "w G^T M^-1 G (w = gamma times the material's initial shear "
+        "modulus, at most half the volumetric stiffness U'' of the cell) "
+        "and the pressure coupling gives it back, so the Newton step is "
+        "unchanged. It makes the pressure Schur complement nearly that of "
+        "the mass matrix and the iterations flat under mesh refinement; "
+        "0 switches it off (iterations then grow with the mesh, "
+        "doc/solver.md). Unit: 1 (a multiple of the shear modulus).");
+    prm.declare_entry(
         "Reuse AMG",
         "false",
         Patterns::Bool(),
@@ -406,6 +419,7 @@ namespace softgrasp
     smoother_sweeps              = prm.get_integer("AMG smoother sweeps");
     block_preconditioner         = prm.get_bool("Block preconditioner");
     reuse_amg                    = prm.get_bool("Reuse AMG");
+    block_augmentation = prm.get_double("Block preconditioner augmentation");
     prm.leave_subsection();
   }
 

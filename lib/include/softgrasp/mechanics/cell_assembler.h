@@ -43,8 +43,9 @@ namespace softgrasp
     dealii::Vector<double>                       external; ///< f_ext (N)
     std::vector<dealii::types::global_dof_index> dof_indices;
     /// With a split tangent (mixed formulation): matrix holds the
-    /// displacement block A, volumetric the coupling G^T D G, and G, D and
-    /// S_inverse its factors (VolumetricCoupling).
+    /// displacement block A (with the augmented Lagrangian term), volumetric
+    /// the coupling G^T D G, and G, D and S_inverse its factors
+    /// (VolumetricCoupling; ElementDilatation::augment).
     dealii::FullMatrix<double> volumetric, G, D, S_inverse;
     double                     volume   = 0;     ///< of the cell (m^3)
     bool                       failed   = false; ///< inverted element
@@ -88,9 +89,13 @@ namespace softgrasp
   template <int dim> class CellAssembler
   {
   public:
+    /// @p augmentation: with a split volumetric coupling, the augmented
+    /// Lagrangian weight of the displacement block in units of the initial
+    /// shear modulus (ElementDilatation::augment; 0: none).
     CellAssembler(const MaterialLibrary         &materials,
                   const BoundaryConditions<dim> &boundary_conditions,
-                  const Formulation              formulation);
+                  const Formulation              formulation,
+                  const double                   augmentation = 0);
 
     /// Fill @p copy for @p cell at displacement @p u (ghosted). With
     /// @p split_volumetric the mixed formulation's volumetric coupling is
@@ -132,6 +137,11 @@ namespace softgrasp
                                  AssemblyScratchData<dim> &scratch,
                                  AssemblyCopyData         &copy) const;
 
+    /// The lower triangle (with diagonal) of G^T DG added to @p target.
+    static void add_lower_product(const dealii::FullMatrix<double> &G,
+                                  const dealii::FullMatrix<double> &DG,
+                                  dealii::FullMatrix<double>       &target);
+
     void assemble_boundary(
         const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
         const dealii::TrilinosWrappers::MPI::Vector                  &u,
@@ -142,6 +152,7 @@ namespace softgrasp
     const MaterialLibrary         &materials;
     const BoundaryConditions<dim> &boundary_conditions;
     const Formulation              formulation;
+    const double                   augmentation; ///< of the split coupling; 1
   };
 } // namespace softgrasp
 

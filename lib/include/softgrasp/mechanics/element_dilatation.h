@@ -61,15 +61,26 @@ namespace softgrasp
     const dealii::FullMatrix<double> &condensed_kernel() const;
 
     /**
-     * The inverse of the approximate pressure Schur complement of the
-     * uncondensed element, S = A^-1 + c M, where c M (m^3/Pa) stands for
-     * G K_uu^-1 G^T with @p compliance c = 1/mu (1/Pa) for a solid of shear
-     * modulus mu (the pressure mass matrix approximation of Stokes flow).
-     * Bounded as U'' grows without limit: the basis of a block
-     * preconditioner robust in the bulk modulus.
+     * The augmented splitting of the condensed volumetric stiffness for a
+     * block preconditioner, G^T A G = G^T W G + G^T A' G with W = w M^-1
+     * (w in Pa) moved into the displacement block and A' = A - W kept in
+     * the pressure coupling. w = min(@p gamma, U''_min / 2) keeps A' at
+     * least half of A (U''_min: the least U''(J~) over the element's
+     * points). Writes A' to @p shifted and to @p schur_inverse the inverse
+     * of the approximate pressure Schur complement of the augmented
+     * element, S = A'^-1 + M / (mu + w), where M / (mu + w) stands for
+     * G (K_uu + G^T W G)^-1 G^T for a solid of shear modulus @p mu (Pa)
+     * (the pressure mass matrix approximation of Stokes flow and its
+     * augmented Lagrangian form). Bounded as U'' grows without limit: the
+     * basis of a block preconditioner robust in the bulk modulus. Returns
+     * w.
      */
-    void schur_inverse(const double                compliance,
-                       dealii::FullMatrix<double> &result) const;
+    double augment(const double                gamma,
+                   const double                mu,
+                   dealii::FullMatrix<double> &shifted,
+                   dealii::FullMatrix<double> &schur_inverse) const;
+    /// The inverse of the mass matrix of the P_k basis (1/m^3).
+    const dealii::FullMatrix<double> &mass_inverse() const;
 
   private:
     unsigned int               degree;
@@ -77,7 +88,8 @@ namespace softgrasp
     unsigned int               n_points = 0;
     std::vector<double>        values; ///< N_a(x_q), a-major
     std::vector<double>        p_tilde, J_tilde;
-    double                     p_mean = 0;
+    double                     p_mean        = 0;
+    double                     curvature_min = 0; ///< least U''(J~) (Pa)
     dealii::FullMatrix<double> kernel;
     /// Scratch of reinit(), kept to avoid allocations per cell.
     dealii::FullMatrix<double> mass, M_inverse, scratch;

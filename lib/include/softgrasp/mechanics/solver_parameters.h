@@ -139,6 +139,9 @@ namespace softgrasp
     /// element-wise pressure Schur complement (VolumetricOperator) instead
     /// of AMG on the condensed tangent
     bool block_preconditioner = true;
+    /// block preconditioner: augmented Lagrangian weight of the
+    /// displacement block, in units of the initial shear modulus; 1
+    double block_augmentation = 3;
     /// iterative: keep the AMG hierarchy over Newton iterations and load
     /// steps while it serves (LinearSolver)
     bool reuse_amg = false;
