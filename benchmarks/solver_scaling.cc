@@ -34,14 +34,17 @@ main(int argc, char **argv)
   const unsigned                   degree = argc > 2 ? std::stoi(argv[2]) : 1;
   const double                     nu = argc > 3 ? std::stod(argv[3]) : 0.49;
 
-  const bool  block     = argc > 4 ? std::string(argv[4]) != "false" : true;
-  const bool  reuse_amg = argc > 5 ? std::string(argv[5]) != "false" : true;
-  std::string prm       = softgrasp_tests::compressed_block_prm(
-      n, degree, nu, "iterative", block, "solver_scaling_output", reuse_amg);
-  if (argc > 6)
-    prm += std::string("subsection Linear solver\n set Block preconditioner "
-                       "augmentation = ") +
-           argv[6] + "\nend\n";
+  const bool block     = argc > 4 ? std::string(argv[4]) != "false" : true;
+  const bool reuse_amg = argc > 5 ? std::string(argv[5]) != "false" : true;
+  const std::string prm =
+      softgrasp_tests::compressed_block_prm(n,
+                                            degree,
+                                            nu,
+                                            "iterative",
+                                            block,
+                                            "solver_scaling_output",
+                                            reuse_amg,
+                                            argc > 6 ? argv[6] : "");
 
   ParameterHandler prm_handler;
   softgrasp::MechanicsSolver<3>::declare_parameters(prm_handler);

@@ -81,7 +81,8 @@ namespace softgrasp_tests
    * mixed u-p-J formulation, @p n cells per edge of degree @p degree; the
    * iterative solver with or without the block preconditioner
    * (@p linear_solver: direct, iterative). The classic test of a solver for
-   * nearly incompressible solids.
+   * nearly incompressible solids. A non-empty @p augmentation sets 'Block
+   * preconditioner augmentation' (else its default).
    */
   inline std::string compressed_block_prm(const unsigned int n,
                                           const unsigned int degree,
@@ -89,7 +90,8 @@ namespace softgrasp_tests
                                           const std::string &linear_solver,
                                           const bool         block,
                                           const std::string &directory,
-                                          const bool         reuse_amg = false)
+                                          const bool         reuse_amg = false,
+                                          const std::string &augmentation = "")
   {
     std::ostringstream prm;
     prm << "subsection Mesh\n set Type = block\n subsection Block\n"
@@ -112,7 +114,11 @@ namespace softgrasp_tests
         << "subsection Linear solver\n set Type = " << linear_solver
         << "\n set Relative tolerance = 1e-6\n"
         << " set Block preconditioner = " << (block ? "true" : "false")
-        << "\n set Reuse AMG = " << (reuse_amg ? "true" : "false") << "\nend\n"
+        << "\n set Reuse AMG = " << (reuse_amg ? "true" : "false") << "\n"
+        << (augmentation.empty() ? std::string()
+                                 : " set Block preconditioner augmentation = " +
+                                       augmentation + "\n")
+        << "end\n"
         << "subsection Output\n set Directory = " << directory
         << "\n set VTU interval = 0\n set Verbose = false\nend\n";
     return prm.str();

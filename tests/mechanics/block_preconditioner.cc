@@ -5,7 +5,7 @@
 //  - gives the direct solver's platen force, also with the AMG kept over
 //    Newton iterations ('Reuse AMG'),
 //  - needs GMRES iterations per Newton step that do not grow as nu -> 0.5
-//    (kappa/mu from 29 to 5000) nor under refinement,
+//    (kappa/mu from 50 to 5000) nor under refinement,
 // where AMG on the condensed tangent needs ever more.
 #include "../solver_factory.h"
 #include "../tests.h"
@@ -32,13 +32,8 @@ namespace
              const bool         reuse_amg    = false,
              const std::string &augmentation = "")
   {
-    std::string prm = compressed_block_prm(
-        n, 2, nu, solver, block, "block_output", reuse_amg);
-    if (!augmentation.empty())
-      prm += "subsection Linear solver\n set Block preconditioner "
-             "augmentation = " +
-             augmentation + "\nend\n";
-    auto s = make_solver<3>(prm);
+    auto s = make_solver<3>(compressed_block_prm(
+        n, 2, nu, solver, block, "block_output", reuse_amg, augmentation));
     s->run();
     const auto &history = s->history();
     const auto  last    = history.rows.size() - 1;
