@@ -107,12 +107,14 @@ namespace softgrasp
       const bool                                            with_matrix,
       const InertiaTerm                                    &inertia,
       const bool                                            split_volumetric,
+      const DilatationCoefficients                         *given,
       AssemblyScratchData<dim>                             &scratch,
       AssemblyCopyData                                     &copy) const
   {
     const unsigned int n = cell->get_fe().n_dofs_per_cell();
     copy.dof_indices.resize(n);
     cell->get_dof_indices(copy.dof_indices);
+    copy.cell_index = cell->active_cell_index();
     copy.internal.reinit(n);
     copy.external.reinit(n);
     if (with_matrix)
@@ -124,7 +126,7 @@ namespace softgrasp
     {
       const Material &material = materials.get(cell->material_id());
       assemble_volume(
-          u, material, with_matrix, split_volumetric, scratch, copy);
+          u, material, with_matrix, split_volumetric, given, scratch, copy);
       if (inertia.active())
         add_inertia(u, material, with_matrix, inertia, scratch, copy);
       assemble_boundary(cell, u, with_matrix, scratch, copy);
@@ -151,8 +153,9 @@ namespace softgrasp
                                       const Material &material,
                                       const bool      with_matrix,
                                       const bool      split_volumetric,
-                                      AssemblyScratchData<dim> &scratch,
-                                      AssemblyCopyData         &copy) const
+                                      const DilatationCoefficients *given,
+                                      AssemblyScratchData<dim>     &scratch,
+                                      AssemblyCopyData             &copy) const
   {
     const FEValues<dim>      &fe_values = scratch.fe_values;
     const FiniteElement<dim> &fe        = fe_values.get_fe();
@@ -173,11 +176,19 @@ namespace softgrasp
     }
 
     const bool mixed = formulation == Formulation::mixed_upJ;
-    if (mixed)
+    if (mixed && given != nullptr)
+      scratch.dilatation.reinit(fe_values.get_quadrature_points(),
+                                scratch.JxW,
+                                scratch.J,
+                                material.volumetric_energy(),
+                                *given);
+    else if (mixed)
       scratch.dilatation.reinit(fe_values.get_quadrature_points(),
                                 scratch.JxW,
                                 scratch.J,
                                 material.volumetric_energy());
+    if (mixed)
+      scratch.dilatation.get_coefficients(copy.coefficients);
 
     const bool         gravity = boundary_conditions.has_gravity();
     Material::Response response;
@@ -237,6 +248,8 @@ namespace softgrasp
       }
     }
 
+    if (mixed && (with_matrix || given != nullptr))
+      add_dilatation_terms(with_matrix, scratch, copy);
     if (with_matrix && mixed)
       add_volumetric_coupling(material, split_volumetric, scratch, copy);
     if (with_matrix)
@@ -252,21 +265,12 @@ namespace softgrasp
                                               AssemblyScratchData<dim> &scratch,
                                               AssemblyCopyData &copy) const
   {
-    // K_con = G^T D G, G_ak = int N_a J div_x N_k dV, D the kernel
-    const ElementDilatation<dim> &d   = scratch.dilatation;
-    const unsigned int            nb  = d.n_basis();
-    const unsigned int            n   = copy.matrix.m();
-    const unsigned int            n_q = scratch.J.size();
-    FullMatrix<double>           &G   = copy.G;
-    G.reinit(nb, n);
-    for (unsigned int q = 0; q < n_q; ++q)
-      for (unsigned int k = 0; k < n; ++k)
-      {
-        const double div = trace(scratch.grad_Nx[q][k]);
-        for (unsigned int a = 0; a < nb; ++a)
-          G(a, k) += d.basis(a, q) * scratch.J[q] * div * scratch.JxW[q];
-      }
-    FullMatrix<double> DG(nb, n);
+    // K_con = G^T D G (G from add_dilatation_terms), D the kernel
+    const ElementDilatation<dim> &d  = scratch.dilatation;
+    const unsigned int            nb = d.n_basis();
+    const unsigned int            n  = copy.matrix.m();
+    const FullMatrix<double>     &G  = copy.G;
+    FullMatrix<double>            DG(nb, n);
     if (!split)
     {
       d.condensed_kernel().mmult(DG, G);
@@ -293,6 +297,40 @@ namespace softgrasp
       DG *= w;
       add_lower_product(G, DG, copy.matrix);
     }
+  }
+
+  template <int dim>
+  void
+  CellAssembler<dim>::add_dilatation_terms(const bool with_matrix,
+                                           AssemblyScratchData<dim> &scratch,
+                                           AssemblyCopyData         &copy) const
+  {
+    // G_ak = int N_a J div_x N_k dV
+    const ElementDilatation<dim> &d   = scratch.dilatation;
+    const unsigned int            nb  = d.n_basis();
+    const unsigned int            n   = copy.internal.size();
+    const unsigned int            n_q = scratch.J.size();
+    FullMatrix<double>           &G   = copy.G;
+    G.reinit(nb, n);
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int k = 0; k < n; ++k)
+      {
+        const double div = trace(scratch.grad_Nx[q][k]);
+        for (unsigned int a = 0; a < nb; ++a)
+          G(a, k) += d.basis(a, q) * scratch.J[q] * div * scratch.JxW[q];
+      }
+    // The condensed element equations: f_int += G^T s (zero where J~ and
+    // p~ are the projections); dJ~ = M^-1 (R_p + G du), dp~ = s + A G du.
+    G.Tvmult_add(copy.internal, d.pressure_offset());
+    if (!with_matrix)
+      return;
+    DilatationLinearization &l = copy.linearization;
+    l.J_offset                 = d.dilatation_offset();
+    l.p_offset                 = d.pressure_offset();
+    l.J_rate.reinit(nb, n);
+    l.p_rate.reinit(nb, n);
+    d.mass_inverse().mmult(l.J_rate, G);
+    d.condensed_kernel().mmult(l.p_rate, G);
   }
 
   template <int dim>

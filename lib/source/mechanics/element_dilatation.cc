@@ -17,11 +17,10 @@ namespace softgrasp
   }
 
   template <int dim>
-  void ElementDilatation<dim>::reinit(const std::vector<Point<dim>> &points,
-                                      const std::vector<double>     &JxW,
-                                      const std::vector<double>     &J,
-                                      const VolumetricEnergy        &energy,
-                                      const bool with_stiffness)
+  void
+  ElementDilatation<dim>::set_up_basis(const std::vector<Point<dim>> &points,
+                                       const std::vector<double>     &JxW,
+                                       const std::vector<double>     &J)
   {
     n_points = points.size();
     values.assign(n_functions * n_points, 1.0);
@@ -39,25 +38,23 @@ namespace softgrasp
           values[(1 + d) * n_points + q] = (points[q][d] - center[d]) / h;
     }
 
-    // Mass matrix and its inverse (members: no allocation per cell).
-    FullMatrix<double> &M = mass;
-    Vector<double>     &b = moments;
-    M.reinit(n_functions, n_functions);
-    b.reinit(n_functions);
+    // Mass matrix, its inverse and int N J dV (members: no allocation per
+    // cell).
+    mass.reinit(n_functions, n_functions);
+    moments.reinit(n_functions);
     for (unsigned int q = 0; q < n_points; ++q)
       for (unsigned int a = 0; a < n_functions; ++a)
       {
-        b[a] += basis(a, q) * J[q] * JxW[q];
+        moments[a] += basis(a, q) * J[q] * JxW[q];
         for (unsigned int c = 0; c < n_functions; ++c)
-          M(a, c) += basis(a, q) * basis(c, q) * JxW[q];
+          mass(a, c) += basis(a, q) * basis(c, q) * JxW[q];
       }
     M_inverse.reinit(n_functions, n_functions);
-    M_inverse.invert(M);
+    M_inverse.invert(mass);
+  }
 
-    // J~ = Pi_h J
-    Vector<double> &J_coefficients = coefficients;
-    J_coefficients.reinit(n_functions);
-    M_inverse.vmult(J_coefficients, b);
+  template <int dim> void ElementDilatation<dim>::evaluate_dilatation()
+  {
     J_tilde.assign(n_points, 0.0);
     for (unsigned int q = 0; q < n_points; ++q)
     {
@@ -66,17 +63,14 @@ namespace softgrasp
       if (!(J_tilde[q] > 0) || !std::isfinite(J_tilde[q]))
         throw InvertedMaterialState(J_tilde[q]);
     }
+  }
 
-    // p~ = Pi_h U'(J~) (b reused for its moments)
-    b = 0;
-    for (unsigned int q = 0; q < n_points; ++q)
-    {
-      const double dU = energy.first_derivative(J_tilde[q]);
-      for (unsigned int a = 0; a < n_functions; ++a)
-        b[a] += basis(a, q) * dU * JxW[q];
-    }
-    Vector<double> &p_coefficients = coefficients;
-    M_inverse.vmult(p_coefficients, b);
+  template <int dim>
+  void ElementDilatation<dim>::evaluate_pressure(const std::vector<double> &JxW)
+  {
+    double volume = 0;
+    for (const double w : JxW)
+      volume += w;
     p_tilde.assign(n_points, 0.0);
     p_mean = 0;
     for (unsigned int q = 0; q < n_points; ++q)
@@ -85,9 +79,26 @@ namespace softgrasp
         p_tilde[q] += p_coefficients[a] * basis(a, q);
       p_mean += p_tilde[q] * JxW[q] / volume;
     }
+  }
 
-    if (!with_stiffness)
-      return;
+  template <int dim>
+  void ElementDilatation<dim>::pressure_moments(const std::vector<double> &JxW,
+                                                const VolumetricEnergy &energy,
+                                                Vector<double> &result) const
+  {
+    result.reinit(n_functions);
+    for (unsigned int q = 0; q < n_points; ++q)
+    {
+      const double dU = energy.first_derivative(J_tilde[q]);
+      for (unsigned int a = 0; a < n_functions; ++a)
+        result[a] += basis(a, q) * dU * JxW[q];
+    }
+  }
+
+  template <int dim>
+  void ElementDilatation<dim>::compute_kernel(const std::vector<double> &JxW,
+                                              const VolumetricEnergy    &energy)
+  {
     // A = M^-1 K_JJ M^-1, K_JJ = int N U''(J~) N^T dV
     FullMatrix<double> &K_JJ = scratch;
     K_JJ.reinit(n_functions, n_functions);
@@ -103,6 +114,77 @@ namespace softgrasp
     FullMatrix<double> tmp(n_functions, n_functions);
     M_inverse.mmult(tmp, K_JJ);
     tmp.mmult(kernel, M_inverse);
+  }
+
+  template <int dim>
+  void ElementDilatation<dim>::reinit(const std::vector<Point<dim>> &points,
+                                      const std::vector<double>     &JxW,
+                                      const std::vector<double>     &J,
+                                      const VolumetricEnergy        &energy,
+                                      const bool with_stiffness)
+  {
+    set_up_basis(points, JxW, J);
+    // J~ = Pi_h J, then p~ = Pi_h U'(J~): both residuals vanish.
+    J_coefficients.reinit(n_functions);
+    M_inverse.vmult(J_coefficients, moments);
+    evaluate_dilatation();
+    Vector<double> &b = J_offset; // scratch here, zero on return
+    pressure_moments(JxW, energy, b);
+    p_coefficients.reinit(n_functions);
+    M_inverse.vmult(p_coefficients, b);
+    evaluate_pressure(JxW);
+    J_offset.reinit(n_functions);
+    p_offset.reinit(n_functions);
+    if (with_stiffness)
+      compute_kernel(JxW, energy);
+  }
+
+  template <int dim>
+  void ElementDilatation<dim>::reinit(const std::vector<Point<dim>> &points,
+                                      const std::vector<double>     &JxW,
+                                      const std::vector<double>     &J,
+                                      const VolumetricEnergy        &energy,
+                                      const DilatationCoefficients  &given)
+  {
+    set_up_basis(points, JxW, J);
+    J_coefficients = given.J;
+    p_coefficients = given.p;
+    evaluate_dilatation();
+    evaluate_pressure(JxW);
+    compute_kernel(JxW, energy);
+    // R_p = int N J dV - M J~,  R_J = int N U'(J~) dV - M p~
+    Vector<double> R_p(moments), R_J, scratch_vector(n_functions);
+    mass.vmult(scratch_vector, J_coefficients);
+    R_p -= scratch_vector;
+    pressure_moments(JxW, energy, R_J);
+    mass.vmult(scratch_vector, p_coefficients);
+    R_J -= scratch_vector;
+    // dJ~ offset M^-1 R_p; dp~ offset s = M^-1 R_J + A R_p
+    J_offset.reinit(n_functions);
+    M_inverse.vmult(J_offset, R_p);
+    p_offset.reinit(n_functions);
+    M_inverse.vmult(p_offset, R_J);
+    kernel.vmult_add(p_offset, R_p);
+  }
+
+  template <int dim>
+  void
+  ElementDilatation<dim>::get_coefficients(DilatationCoefficients &result) const
+  {
+    result.J = J_coefficients;
+    result.p = p_coefficients;
+  }
+
+  template <int dim>
+  const Vector<double> &ElementDilatation<dim>::pressure_offset() const
+  {
+    return p_offset;
+  }
+
+  template <int dim>
+  const Vector<double> &ElementDilatation<dim>::dilatation_offset() const
+  {
+    return J_offset;
   }
 
   template <int dim>

@@ -19,7 +19,25 @@ namespace softgrasp
   typename NewtonSolver<dim>::Result
   NewtonSolver<dim>::solve(SolidSystem<dim> &system) const
   {
-    const Result result = iterate(system);
+    /// Ends the solve's element unknowns also when an error unwinds.
+    struct Scope
+    {
+      SolidSystem<dim> &system;
+      explicit Scope(SolidSystem<dim> &s)
+          : system(s)
+      {
+        system.begin_newton_solve();
+      }
+      ~Scope()
+      {
+        system.end_newton_solve();
+      }
+    };
+    Result result;
+    {
+      const Scope scope(system);
+      result = iterate(system);
+    }
     // Collective on every rank, in the normal flow of the run: MUMPS'
     // symbolic factorisation lives for one load step.
     system.release_factorization();
@@ -34,7 +52,7 @@ namespace softgrasp
     auto                         &u         = system.solution();
     double                        violation = system.update_constraints();
     auto                          state     = system.assemble(false);
-    TrilinosWrappers::MPI::Vector du, u_start;
+    TrilinosWrappers::MPI::Vector du;
     double                        last_increment = 0; // max |alpha du| (m)
 
     for (unsigned int it = 0;; ++it)
@@ -118,14 +136,13 @@ namespace softgrasp
       // being imposed (then r(u) is not the gradient along du) and with
       // nodal conditions such as contact (then r is not an energy gradient;
       // the semi-smooth Newton method takes full steps).
-      u_start            = u;
+      system.begin_update();
       const double s0    = system.residual_dot(du);
       const bool   jump  = violation > 1e-12 * u_scale;
       double       alpha = 1.0;
       for (unsigned int ls = 0;; ++ls)
       {
-        u = u_start;
-        u.add(alpha, du);
+        system.apply_update(du, alpha);
         violation = system.update_constraints();
         state     = system.assemble(false);
         if (!state.ok)

@@ -250,14 +250,18 @@ namespace softgrasp
                       AssemblyScratchData<dim> &scratch,
                       AssemblyCopyData         &copy)
     {
-      assembler.assemble(cell,
-                         u_ghosted,
-                         with_matrix,
-                         inertia,
-                         with_matrix && split_volumetric,
-                         scratch,
-                         copy);
+      assembler.assemble(
+          cell,
+          u_ghosted,
+          with_matrix,
+          inertia,
+          with_matrix && split_volumetric,
+          dilatation_state.coefficients(cell->active_cell_index()),
+          scratch,
+          copy);
     };
+    const bool recording =
+        dilatation_state.active() && !dilatation_state.recorded();
     auto copier = [&](const AssemblyCopyData &copy)
     {
       if (copy.failed)
@@ -278,6 +282,10 @@ namespace softgrasp
           cell_rhs, copy.dof_indices, residual);
       if (with_matrix)
         distribute_cell_tangent(copy, cell_rhs);
+      if (recording)
+        dilatation_state.store(copy.cell_index, copy.coefficients);
+      if (with_matrix && dilatation_state.active())
+        dilatation_state.store(copy.cell_index, copy.linearization);
     };
     WorkStream::run(
         CellFilter(IteratorFilters::LocallyOwnedCell(), dofs.begin_active()),
@@ -316,6 +324,8 @@ namespace softgrasp
           communicator(), result.failed_J, failing_rank);
       return result;
     }
+    if (recording)
+      dilatation_state.set_recorded(true);
     if (nodal_conditions != nullptr)
     {
       if (!with_matrix)
@@ -327,6 +337,36 @@ namespace softgrasp
     result.residual_norm = residual.l2_norm();
     result.force_scale   = std::max(f_int.l2_norm(), f_ext.l2_norm());
     return result;
+  }
+
+  template <int dim> void SolidSystem<dim>::begin_newton_solve()
+  {
+    if (parameters.discretization.formulation == Formulation::mixed_upJ)
+      dilatation_state.start(triangulation.n_active_cells());
+  }
+
+  template <int dim> void SolidSystem<dim>::end_newton_solve()
+  {
+    dilatation_state.clear();
+  }
+
+  template <int dim> void SolidSystem<dim>::begin_update()
+  {
+    u_start = u;
+    dilatation_state.begin_update();
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::apply_update(const TrilinosWrappers::MPI::Vector &du,
+                                      const double alpha)
+  {
+    u = u_start;
+    u.add(alpha, du);
+    if (!dilatation_state.recorded())
+      return;
+    du_ghosted.reinit(owned, relevant, communicator());
+    du_ghosted = du;
+    dilatation_state.apply_update(dofs, du_ghosted, alpha);
   }
 
   template <int dim>

@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 #include <softgrasp/materials/material_library.h>
 #include <softgrasp/mechanics/boundary_conditions.h>
+#include <softgrasp/mechanics/dilatation_state.h>
 #include <softgrasp/mechanics/element_dilatation.h>
 #include <softgrasp/mechanics/solver_parameters.h>
 #include <string>
@@ -42,15 +43,21 @@ namespace softgrasp
     dealii::Vector<double>                       internal; ///< f_int (N)
     dealii::Vector<double>                       external; ///< f_ext (N)
     std::vector<dealii::types::global_dof_index> dof_indices;
+    unsigned int cell_index = 0; ///< active cell index
     /// With a split tangent (mixed formulation): matrix holds the
     /// displacement block A (with the augmented Lagrangian term), volumetric
     /// the coupling G^T D G, and G, D and S_inverse its factors
     /// (VolumetricCoupling; ElementDilatation::augment).
     dealii::FullMatrix<double> volumetric, G, D, S_inverse;
-    double                     volume   = 0;     ///< of the cell (m^3)
-    bool                       failed   = false; ///< inverted element
-    double                     failed_J = 0;
-    std::string                failed_cell;
+    /// Mixed formulation: the cell's J~ and p~ coefficients used, and with
+    /// the matrix how they change with the displacement increment
+    /// (ElementDilatation; DilatationState).
+    DilatationCoefficients  coefficients;
+    DilatationLinearization linearization;
+    double                  volume   = 0;     ///< of the cell (m^3)
+    bool                    failed   = false; ///< inverted element
+    double                  failed_J = 0;
+    std::string             failed_cell;
   };
 
   /**
@@ -99,15 +106,18 @@ namespace softgrasp
 
     /// Fill @p copy for @p cell at displacement @p u (ghosted). With
     /// @p split_volumetric the mixed formulation's volumetric coupling is
-    /// kept apart from the matrix (see AssemblyCopyData).
+    /// kept apart from the matrix (see AssemblyCopyData). The mixed
+    /// formulation takes J~ and p~ from @p given, or projects them from
+    /// @p u where it is null (ElementDilatation).
     void
     assemble(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
              const dealii::TrilinosWrappers::MPI::Vector                  &u,
-             const bool                with_matrix,
-             const InertiaTerm        &inertia,
-             const bool                split_volumetric,
-             AssemblyScratchData<dim> &scratch,
-             AssemblyCopyData         &copy) const;
+             const bool                    with_matrix,
+             const InertiaTerm            &inertia,
+             const bool                    split_volumetric,
+             const DilatationCoefficients *given,
+             AssemblyScratchData<dim>     &scratch,
+             AssemblyCopyData             &copy) const;
 
     /// The row-sum lumped mass m_k = int rho_0 N_k dV (kg; kg/m in 2D) of
     /// the cell that @p fe_values was last reinit'ed on.
@@ -125,13 +135,21 @@ namespace softgrasp
 
     void assemble_volume(const dealii::TrilinosWrappers::MPI::Vector &u,
                          const Material                              &material,
-                         const bool                with_matrix,
-                         const bool                split_volumetric,
-                         AssemblyScratchData<dim> &scratch,
-                         AssemblyCopyData         &copy) const;
+                         const bool                    with_matrix,
+                         const bool                    split_volumetric,
+                         const DilatationCoefficients *given,
+                         AssemblyScratchData<dim>     &scratch,
+                         AssemblyCopyData             &copy) const;
+
+    /// Mixed formulation with given J~ and p~: G (into copy.G), the force
+    /// correction G^T s and, with the matrix, the linearisation of the
+    /// element unknowns.
+    void add_dilatation_terms(const bool                with_matrix,
+                              AssemblyScratchData<dim> &scratch,
+                              AssemblyCopyData         &copy) const;
 
     /// K_con of the mixed formulation, into the matrix or, with @p split,
-    /// into copy.volumetric with its factors.
+    /// into copy.volumetric with its factors. Needs copy.G.
     void add_volumetric_coupling(const Material           &material,
                                  const bool                split,
                                  AssemblyScratchData<dim> &scratch,

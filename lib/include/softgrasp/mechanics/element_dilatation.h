@@ -9,6 +9,13 @@
 
 namespace softgrasp
 {
+  /// The coefficients of J~ and p~ (Pa) of one element in the P_k basis of
+  /// ElementDilatation: the element unknowns of a Newton solve.
+  struct DilatationCoefficients
+  {
+    dealii::Vector<double> J, p;
+  };
+
   /**
    * The element-local fields of the three-field (Hu-Washizu) u-p-J
    * formulation,
@@ -28,6 +35,15 @@ namespace softgrasp
    *
    * The P1 basis is {1, (X - X_c)/h} in reference coordinates, centred and
    * scaled on the element for conditioning.
+   *
+   * Within a Newton solve J~ and p~ may instead be given (unknowns updated
+   * with the Newton increments, as in step-44); then their residuals
+   * R_p = int N (J - J~) dV and R_J = int N (U'(J~) - p~) dV need not
+   * vanish, and condensing the linearised element equations adds
+   * G^T s, s = M^-1 R_J + A R_p, to the internal force. Their increments
+   * follow from the displacement increment du as
+   *   dJ~ = M^-1 (R_p + G du),   dp~ = s + A G du.
+   * At a converged state both residuals vanish and the two ways agree.
    */
   template <int dim> class ElementDilatation
   {
@@ -47,6 +63,25 @@ namespace softgrasp
                 const std::vector<double>             &J,
                 const VolumetricEnergy                &energy,
                 const bool                             with_stiffness = true);
+
+    /**
+     * As reinit(), but with J~ and p~ @p given instead of projected; the
+     * condensed kernel is always computed (the force needs it). Throws
+     * InvertedMaterialState if J~ <= 0 anywhere.
+     */
+    void reinit(const std::vector<dealii::Point<dim>> &points,
+                const std::vector<double>             &JxW,
+                const std::vector<double>             &J,
+                const VolumetricEnergy                &energy,
+                const DilatationCoefficients          &given);
+
+    /// The coefficients of J~ and p~ of the last reinit().
+    void get_coefficients(DilatationCoefficients &result) const;
+    /// s = M^-1 R_J + A R_p (Pa), the force correction G^T s and the
+    /// offset of dp~; zero after the projecting reinit().
+    const dealii::Vector<double> &pressure_offset() const;
+    /// M^-1 R_p, the offset of dJ~; zero after the projecting reinit().
+    const dealii::Vector<double> &dilatation_offset() const;
 
     unsigned int n_basis() const;
     /// Basis function @p a at quadrature point @p q.
@@ -83,6 +118,22 @@ namespace softgrasp
     const dealii::FullMatrix<double> &mass_inverse() const;
 
   private:
+    /// Basis values, mass matrix, its inverse and the moments int N J dV.
+    void set_up_basis(const std::vector<dealii::Point<dim>> &points,
+                      const std::vector<double>             &JxW,
+                      const std::vector<double>             &J);
+    /// J~ at the points from its coefficients; throws if not positive.
+    void evaluate_dilatation();
+    /// p~ at the points and its mean from its coefficients.
+    void evaluate_pressure(const std::vector<double> &JxW);
+    /// The moments int N U'(J~) dV into @p result.
+    void pressure_moments(const std::vector<double> &JxW,
+                          const VolumetricEnergy    &energy,
+                          dealii::Vector<double>    &result) const;
+    /// The kernel A = M^-1 K_JJ M^-1 and the least U''(J~).
+    void compute_kernel(const std::vector<double> &JxW,
+                        const VolumetricEnergy    &energy);
+
     unsigned int               degree;
     unsigned int               n_functions;
     unsigned int               n_points = 0;
@@ -93,7 +144,9 @@ namespace softgrasp
     dealii::FullMatrix<double> kernel;
     /// Scratch of reinit(), kept to avoid allocations per cell.
     dealii::FullMatrix<double> mass, M_inverse, scratch;
-    dealii::Vector<double>     moments, coefficients;
+    dealii::Vector<double>     moments;
+    dealii::Vector<double>     J_coefficients, p_coefficients;
+    dealii::Vector<double>     J_offset, p_offset;
   };
 } // namespace softgrasp
 

@@ -14,6 +14,7 @@
 #include <map>
 #include <softgrasp/mechanics/boundary_conditions.h>
 #include <softgrasp/mechanics/cell_assembler.h>
+#include <softgrasp/mechanics/dilatation_state.h>
 #include <softgrasp/mechanics/linear_solver.h>
 #include <softgrasp/mechanics/nodal_conditions.h>
 #include <softgrasp/mechanics/solver_parameters.h>
@@ -72,6 +73,22 @@ namespace softgrasp
 
     /// Assemble f_int - f_ext (and the tangent) at the current solution.
     AssemblyResult assemble(const bool with_matrix);
+
+    /**
+     * Start a Newton solve: with the mixed formulation, the element
+     * pressure and dilatation become unknowns (DilatationState), recorded
+     * from the solution at the next assembly and moved by apply_update().
+     * end_newton_solve() returns to projecting them from the solution.
+     */
+    void begin_newton_solve();
+    void end_newton_solve();
+    /// Remember the solution (and the element unknowns) as the start of an
+    /// update.
+    void begin_update();
+    /// solution = start + @p alpha @p du (m), and the element unknowns
+    /// alike through the linearisation of the last tangent.
+    void apply_update(const dealii::TrilinosWrappers::MPI::Vector &du,
+                      const double                                 alpha);
 
     /// Include the inertia of an implicit dynamic step in the assemblies
     /// that follow (InertiaTerm; a default-constructed one removes it).
@@ -195,7 +212,9 @@ namespace softgrasp
     std::vector<std::vector<dealii::IndexSet>> reaction_dofs; ///< [id][c]
     double                                     domain_size      = 1; ///< m
     NodalConditions<dim>                      *nodal_conditions = nullptr;
-    bool                                       with_tangent     = true;
+    DilatationState<dim>                       dilatation_state;
+    dealii::TrilinosWrappers::MPI::Vector      u_start, du_ghosted;
+    bool                                       with_tangent = true;
     InertiaTerm                                inertia;
   };
 } // namespace softgrasp
