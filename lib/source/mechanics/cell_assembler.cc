@@ -265,18 +265,18 @@ namespace softgrasp
                                               AssemblyScratchData<dim> &scratch,
                                               AssemblyCopyData &copy) const
   {
-    // K_con = G^T D G (G from add_dilatation_terms), D the kernel
+    // K_con = G^T D G (G and D G from add_dilatation_terms), D the kernel
     const ElementDilatation<dim> &d  = scratch.dilatation;
     const unsigned int            nb = d.n_basis();
     const unsigned int            n  = copy.matrix.m();
     const FullMatrix<double>     &G  = copy.G;
-    FullMatrix<double>            DG(nb, n);
     if (!split)
     {
-      d.condensed_kernel().mmult(DG, G);
-      add_lower_product(G, DG, copy.matrix);
+      // D G is the rate of p~ (add_dilatation_terms)
+      add_lower_product(G, copy.linearization.p_rate, copy.matrix);
       return;
     }
+    FullMatrix<double> DG(nb, n);
     // Split for the block preconditioner: the displacement block takes
     // G^T W G (W = w M^-1, the augmented Lagrangian term), the coupling
     // keeps G^T D G with D = A - W; their sum is K_con unchanged.

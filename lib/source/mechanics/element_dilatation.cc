@@ -153,12 +153,15 @@ namespace softgrasp
     evaluate_pressure(JxW);
     compute_kernel(JxW, energy);
     // R_p = int N J dV - M J~,  R_J = int N U'(J~) dV - M p~
-    Vector<double> R_p(moments), R_J, scratch_vector(n_functions);
-    mass.vmult(scratch_vector, J_coefficients);
-    R_p -= scratch_vector;
+    // (members as scratch: no allocation per cell)
+    Vector<double> &R_p = residual_p, &R_J = residual_J, &Mc = mass_times;
+    R_p = moments;
+    Mc.reinit(n_functions);
+    mass.vmult(Mc, J_coefficients);
+    R_p -= Mc;
     pressure_moments(JxW, energy, R_J);
-    mass.vmult(scratch_vector, p_coefficients);
-    R_J -= scratch_vector;
+    mass.vmult(Mc, p_coefficients);
+    R_J -= Mc;
     // dJ~ offset M^-1 R_p; dp~ offset s = M^-1 R_J + A R_p
     J_offset.reinit(n_functions);
     M_inverse.vmult(J_offset, R_p);

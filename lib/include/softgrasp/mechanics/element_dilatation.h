@@ -147,6 +147,7 @@ namespace softgrasp
     dealii::Vector<double>     moments;
     dealii::Vector<double>     J_coefficients, p_coefficients;
     dealii::Vector<double>     J_offset, p_offset;
+    dealii::Vector<double>     residual_p, residual_J, mass_times;
   };
 } // namespace softgrasp
 
