@@ -73,7 +73,7 @@ main(int argc, char **argv)
       std::cout << "n = " << n << ", nu = " << nu
                 << ": Newton iterations: direct " << direct.newton << ", block "
                 << block.newton << "; iterations per Newton step: block "
-                << std::round(block.linear_per_newton);
+                << std::round(10 * block.linear_per_newton) / 10;
       SG_CHECK(close(block.force, direct.force, 1e-6),
                "the block-preconditioned and the direct solver disagree");
       iterations[{n, nu}] = block.linear_per_newton;
@@ -98,8 +98,9 @@ main(int argc, char **argv)
                  "disagree");
         if (nu > 0.49)
         {
-          // Without the augmented displacement block (measured: 63
-          // against 36 iterations per Newton step).
+          // Without the augmented displacement block (measured with the
+          // Gauss-Seidel smoother: 39 against 20 iterations per Newton
+          // step; with Chebyshev 63 against 36).
           const Result plain = run(n, nu, "iterative", true, false, "0");
           std::cout << ", block without augmentation "
                     << std::round(plain.linear_per_newton);
@@ -113,12 +114,14 @@ main(int argc, char **argv)
       }
       std::cout << std::endl;
     }
-  // Nearly flat in kappa/mu (50 -> 5000; measured ratios 1.64 and 1.67)
-  // and under refinement (1.09 and 1.11).
+  // Nearly flat in kappa/mu (50 -> 5000; measured ratios 1.41 and 1.40
+  // with the default Gauss-Seidel smoother) and under refinement (1.22 and
+  // 1.21; the Chebyshev smoother grows less, 1.09 and 1.11, from more
+  // iterations: doc/benchmarks.md).
   for (const unsigned int n : {4u, 6u})
     SG_CHECK((iterations[{n, 0.4999}] < 2 * iterations[{n, 0.49}]),
              "block-preconditioned iterations grow with kappa/mu");
   for (const double nu : {0.49, 0.4999})
-    SG_CHECK((iterations[{6, nu}] < 1.25 * iterations[{4, nu}]),
+    SG_CHECK((iterations[{6, nu}] < 1.35 * iterations[{4, nu}]),
              "block-preconditioned iterations grow under refinement");
 }

@@ -181,16 +181,37 @@ namespace softgrasp
     return finite_or_breakdown(x, result);
   }
 
+  namespace
+  {
+    /// ML's name of a resolved smoother.
+    const char *smoother_name(const AmgSmoother smoother)
+    {
+      switch (smoother)
+      {
+      case AmgSmoother::gauss_seidel:
+        return "Gauss-Seidel";
+      case AmgSmoother::symmetric_gauss_seidel:
+        return "symmetric Gauss-Seidel";
+      default:
+        return "Chebyshev";
+      }
+    }
+  } // namespace
+
   void LinearSolver::initialize_amg(
       const TrilinosWrappers::SparseMatrix &A,
+      const bool                            symmetric,
       TrilinosWrappers::PreconditionAMG    &preconditioner)
   {
     // ML parameters (as deal.II's PreconditionAMG for elliptic problems),
-    // with the rigid-body modes as pre-computed near null space.
+    // with the rigid-body modes as pre-computed near null space and the
+    // smoother of the Krylov method (symmetric for CG).
     Teuchos::ParameterList ml;
     ML_Epetra::SetDefaults("SA", ml);
-    ml.set("smoother: type", "Chebyshev");
-    ml.set("smoother: sweeps", static_cast<int>(parameters.smoother_sweeps));
+    const AmgSmoother smoother = parameters.smoother_for(symmetric);
+    ml.set("smoother: type", smoother_name(smoother));
+    ml.set("smoother: sweeps",
+           static_cast<int>(parameters.smoother_sweeps_for(smoother)));
     ml.set("aggregation: type", "Uncoupled");
     ml.set("aggregation: threshold", parameters.aggregation_threshold);
     ml.set("coarse: type", "Amesos-KLU");
@@ -213,17 +234,19 @@ namespace softgrasp
   template <typename Attempt>
   LinearSolver::Result
   LinearSolver::with_amg(const TrilinosWrappers::SparseMatrix &A,
+                         const bool                            symmetric,
                          const Attempt                        &attempt)
   {
     if (!parameters.reuse_amg) // a new AMG, freed after the solve
     {
       TrilinosWrappers::PreconditionAMG preconditioner;
-      initialize_amg(A, preconditioner);
+      initialize_amg(A, symmetric, preconditioner);
       return attempt(preconditioner);
     }
-    // A kept AMG refers to its matrix object: a different object needs a
-    // new one.
-    if (amg_matrix != static_cast<const void *>(&A.trilinos_matrix()))
+    // A kept AMG refers to its matrix object: a different object, or a
+    // solve that needs another smoother, needs a new one.
+    if (amg_matrix != static_cast<const void *>(&A.trilinos_matrix()) ||
+        parameters.smoother_for(symmetric) != amg_smoother)
       amg_stale = true;
     // Times are maxima over the ranks, so that every rank decides alike.
     const MPI_Comm comm = A.get_mpi_communicator();
@@ -235,8 +258,9 @@ namespace softgrasp
         Timer setup;
         amg.reset(); // before the new one is built: one hierarchy in memory
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        initialize_amg(A, *amg);
+        initialize_amg(A, symmetric, *amg);
         amg_matrix        = &A.trilinos_matrix();
+        amg_smoother      = parameters.smoother_for(symmetric);
         amg_stale         = false;
         amg_setup_seconds = Utilities::MPI::max(setup.wall_time(), comm);
       }
@@ -317,6 +341,7 @@ namespace softgrasp
         std::max(relative_tolerance, parameters.relative_tolerance) *
         b.l2_norm();
     return with_amg(A,
+                    symmetric,
                     [&](const TrilinosWrappers::PreconditionAMG &amg)
                     {
                       x = 0;
@@ -451,6 +476,6 @@ namespace softgrasp
       }
       return finite_or_breakdown(x, result);
     };
-    return with_amg(A, attempt);
+    return with_amg(A, false, attempt); // GMRES
   }
 } // namespace softgrasp

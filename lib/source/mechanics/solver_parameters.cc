@@ -25,6 +25,11 @@ namespace softgrasp
         {"direct", LinearSolverType::direct},
         {"iterative", LinearSolverType::iterative},
         {"automatic", LinearSolverType::automatic}};
+    const std::vector<std::pair<std::string, AmgSmoother>> smoother_names = {
+        {"automatic", AmgSmoother::automatic},
+        {"Chebyshev", AmgSmoother::chebyshev},
+        {"Gauss-Seidel", AmgSmoother::gauss_seidel},
+        {"symmetric Gauss-Seidel", AmgSmoother::symmetric_gauss_seidel}};
     const std::vector<std::pair<std::string, ExistingResults>>
         existing_results_names = {{"move aside", ExistingResults::move_aside},
                                   {"replace", ExistingResults::replace},
@@ -352,10 +357,24 @@ namespace softgrasp
                       "1e-4",
                       Patterns::Double(0, 1),
                       "ML aggregation drop tolerance. Unit: 1.");
+    prm.declare_entry(
+        "AMG smoother",
+        "automatic",
+        Patterns::Selection(selection(smoother_names)),
+        "Smoother on the levels of the ML AMG hierarchy. 'Chebyshev': a "
+        "Chebyshev polynomial of the Jacobi-scaled matrix (symmetric, for "
+        "CG and GMRES). 'Gauss-Seidel': Gauss-Seidel sweeps, local to each "
+        "rank (fewer Krylov iterations than Chebyshev at lower cost on the "
+        "nearly incompressible displacement block; not symmetric, so CG "
+        "solves take 'symmetric Gauss-Seidel' instead). 'automatic': "
+        "Gauss-Seidel under GMRES (block preconditioner, friction), "
+        "Chebyshev under CG (doc/benchmarks.md gives the measurements).");
     prm.declare_entry("AMG smoother sweeps",
-                      "2",
-                      Patterns::Integer(1, 10),
-                      "Degree of the Chebyshev smoother of ML. Unit: 1.");
+                      "0",
+                      Patterns::Integer(0, 10),
+                      "Degree of the Chebyshev smoother, or Gauss-Seidel "
+                      "sweeps before and after each coarse correction; 0: "
+                      "2 for Chebyshev, 1 for Gauss-Seidel. Unit: 1.");
     prm.declare_entry(
         "Reuse symbolic factorization",
         "true",
@@ -391,7 +410,7 @@ namespace softgrasp
         "doc/solver.md). Unit: 1 (a multiple of the shear modulus).");
     prm.declare_entry(
         "Reuse AMG",
-        "false",
+        "true",
         Patterns::Bool(),
         "Iterative solver: keep the AMG hierarchy (aggregates, coarse "
         "matrices, smoothers) over Newton iterations and load steps while "
@@ -399,11 +418,10 @@ namespace softgrasp
         "the current matrix. It is rebuilt once the iterations a solve "
         "needs beyond the first solve's with it took longer than building "
         "it did, and a solve that fails with a kept hierarchy is repeated "
-        "with a new one. It pays where the matrix changes little between "
-        "Newton iterations (contact at nu = 0.45: linear solves 1.2-1.35 "
-        "times faster) and costs where it changes much (nu = 0.4999: 1.25 "
-        "times slower), see doc/benchmarks.md. 'false' builds it at every "
-        "Newton iteration.");
+        "with a new one. Measured (doc/benchmarks.md): linear solves 1.2-1.35 "
+        "times faster on contact at nu = 0.45 and 1.3 times faster on the "
+        "108k-dof block at nu = 0.4999. 'false' builds it at every Newton "
+        "iteration.");
     prm.leave_subsection();
   }
 
@@ -416,11 +434,34 @@ namespace softgrasp
     max_iterations               = prm.get_integer("Maximum iterations");
     aggregation_threshold        = prm.get_double("AMG aggregation threshold");
     reuse_symbolic_factorization = prm.get_bool("Reuse symbolic factorization");
-    smoother_sweeps              = prm.get_integer("AMG smoother sweeps");
-    block_preconditioner         = prm.get_bool("Block preconditioner");
-    reuse_amg                    = prm.get_bool("Reuse AMG");
-    block_augmentation = prm.get_double("Block preconditioner augmentation");
+    smoother             = lookup(smoother_names, prm.get("AMG smoother"));
+    smoother_sweeps      = prm.get_integer("AMG smoother sweeps");
+    block_preconditioner = prm.get_bool("Block preconditioner");
+    reuse_amg            = prm.get_bool("Reuse AMG");
+    block_augmentation   = prm.get_double("Block preconditioner augmentation");
     prm.leave_subsection();
+  }
+
+  AmgSmoother LinearSolverParameters::smoother_for(const bool symmetric) const
+  {
+    switch (smoother)
+    {
+    case AmgSmoother::automatic:
+      return symmetric ? AmgSmoother::chebyshev : AmgSmoother::gauss_seidel;
+    case AmgSmoother::gauss_seidel:
+      return symmetric ? AmgSmoother::symmetric_gauss_seidel
+                       : AmgSmoother::gauss_seidel;
+    default:
+      return smoother;
+    }
+  }
+
+  unsigned int
+  LinearSolverParameters::smoother_sweeps_for(const AmgSmoother resolved) const
+  {
+    if (smoother_sweeps > 0)
+      return smoother_sweeps;
+    return resolved == AmgSmoother::chebyshev ? 2 : 1;
   }
 
   LinearSolverType

@@ -1,4 +1,5 @@
 #include <Epetra_FEVector.h>
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <softgrasp/mechanics/volumetric_coupling.h>
@@ -24,6 +25,14 @@ namespace softgrasp
       distributed.reinit(owned, communicator);
       ghosted.reinit(owned, relevant, communicator);
       accumulated.reinit(owned, relevant, communicator, true);
+      // where each entry of the ghosted vector sits among the owned ones
+      const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
+      owned_position.assign(map.NumMyElements(), -1);
+      for (int i = 0; i < map.NumMyElements(); ++i)
+        if (owned.is_element(map.GID(i)))
+          owned_position[i] =
+              static_cast<int>(owned.index_within_set(map.GID(i)));
+      buffer.assign(map.NumMyElements(), 0.);
     }
   }
 
@@ -39,8 +48,22 @@ namespace softgrasp
     Cell cell;
     cell.dofs                  = dofs;
     const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
+    // Cells without row transformations or constraints with entries add
+    // their gradient straight into the local entries (gradient()); a
+    // constrained dof without entries (Dirichlet) receives nothing.
+    cell.direct = conditions == nullptr;
     for (const auto index : dofs)
+    {
       cell.local.push_back(map.LID(static_cast<int>(index)));
+      if (constraints->is_constrained(index))
+      {
+        const auto *entries = constraints->get_constraint_entries(index);
+        cell.direct         = cell.direct && entries->empty();
+        cell.target.push_back(-1);
+      }
+      else
+        cell.target.push_back(cell.local.back());
+    }
     cell.h2 = std::pow(volume, 2.0 / dim);
     // P = (Sigma S)^-1 = S^-1 C / h^2
     FullMatrix<double> C(D.m(), D.n()), P(D.m(), D.n());
@@ -106,9 +129,10 @@ namespace softgrasp
     accumulated            = 0;
     const double *const in = p.begin();
     const unsigned int  np = n_pressure;
-    Vector<double>      local;
-    FullMatrix<double>  column;
-    Vector<double>      unused;
+    std::fill(buffer.begin(), buffer.end(), 0.);
+    Vector<double>     local;
+    FullMatrix<double> column;
+    Vector<double>     unused;
     for (std::size_t c = 0; c < cells.size(); ++c)
     {
       const Cell        &cell = cells[c];
@@ -117,6 +141,13 @@ namespace softgrasp
       for (unsigned int a = 0; a < np; ++a)
         for (unsigned int k = 0; k < n; ++k)
           local[k] += cell.G[a * n + k] * in[c * np + a];
+      if (cell.direct)
+      {
+        for (unsigned int k = 0; k < n; ++k)
+          if (cell.target[k] >= 0)
+            buffer[cell.target[k]] += local[k];
+        continue;
+      }
       if (conditions != nullptr)
       {
         // the rows of governed nodes as the tangent's (linear in the rows)
@@ -130,8 +161,18 @@ namespace softgrasp
       }
       constraints->distribute_local_to_global(local, cell.dofs, accumulated);
     }
+    // ghost entries of the direct cells go to their owners with the rest
+    const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
+    for (std::size_t i = 0; i < buffer.size(); ++i)
+      if (owned_position[i] < 0 && buffer[i] != 0.)
+        accumulated(static_cast<types::global_dof_index>(map.GID(i))) +=
+            buffer[i];
     accumulated.compress(VectorOperation::add);
-    u = accumulated;
+    u                  = accumulated;
+    double *const dest = u.begin();
+    for (std::size_t i = 0; i < buffer.size(); ++i)
+      if (owned_position[i] >= 0)
+        dest[owned_position[i]] += buffer[i];
   }
 
   template <int dim>

@@ -131,16 +131,20 @@ namespace softgrasp
                  const double relative_tolerance = 0);
 
   private:
-    /// Set @p preconditioner up as ML AMG of @p A with the near null space.
+    /// Set @p preconditioner up as ML AMG of @p A with the near null space,
+    /// with a smoother fit for CG if @p symmetric, else for GMRES.
     void
     initialize_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
+                   const bool                                    symmetric,
                    dealii::TrilinosWrappers::PreconditionAMG &preconditioner);
 
     /// Run @p attempt (a solve, from x = 0) with the AMG of @p A: the kept
     /// one while it serves ('Reuse AMG'), else a new one; a failure with a
-    /// kept AMG is repeated once with a new one.
+    /// kept AMG is repeated once with a new one. @p symmetric: the attempt
+    /// runs CG.
     template <typename Attempt>
     Result with_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
+                    const bool                                    symmetric,
                     const Attempt                                &attempt);
 
     /// CG or GMRES on @p op with @p preconditioner, stopping at residual
@@ -170,6 +174,7 @@ namespace softgrasp
     /// the next solve needs a new one.
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
     const void  *amg_matrix            = nullptr;
+    AmgSmoother  amg_smoother          = AmgSmoother::chebyshev;
     unsigned int amg_first_iterations  = 0;
     double       amg_iteration_seconds = 0;
     double       amg_setup_seconds     = 0;

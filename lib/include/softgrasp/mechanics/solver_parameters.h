@@ -37,6 +37,15 @@ namespace softgrasp
     automatic  ///< direct up to a number of dofs, iterative above
   };
 
+  /// Smoother of the ML AMG hierarchy ("Linear solver/AMG smoother").
+  enum class AmgSmoother
+  {
+    automatic,             ///< Gauss-Seidel under GMRES, Chebyshev under CG
+    chebyshev,             ///< Chebyshev polynomial (symmetric)
+    gauss_seidel,          ///< Gauss-Seidel (symmetric Gauss-Seidel under CG)
+    symmetric_gauss_seidel ///< forward and backward Gauss-Seidel
+  };
+
   /// Time integration of the solid ("Time/Integrator").
   enum class TimeIntegrator
   {
@@ -131,7 +140,10 @@ namespace softgrasp
     double                          relative_tolerance = 1e-8; ///< of |rhs|; 1
     unsigned int                    max_iterations     = 2000;
     double                          aggregation_threshold = 1e-4; ///< ML AMG; 1
-    unsigned int smoother_sweeps = 2; ///< ML AMG Chebyshev degree
+    AmgSmoother                     smoother = AmgSmoother::automatic;
+    /// ML AMG: Chebyshev degree or Gauss-Seidel sweeps; 0: the smoother's
+    /// own (2 and 1)
+    unsigned int smoother_sweeps = 0;
     /// direct: keep MUMPS' ordering and symbolic factorisation over the
     /// Newton iterations of a load step (only the numeric one is redone)
     bool reuse_symbolic_factorization = true;
@@ -144,7 +156,7 @@ namespace softgrasp
     double block_augmentation = 3;
     /// iterative: keep the AMG hierarchy over Newton iterations and load
     /// steps while it serves (LinearSolver)
-    bool reuse_amg = false;
+    bool reuse_amg = true;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
@@ -153,6 +165,11 @@ namespace softgrasp
     /// iterative; automatic resolved by direct_limit).
     LinearSolverType
     resolve(const dealii::types::global_dof_index n_dofs) const;
+    /// The smoother for a CG (@p symmetric) or a GMRES solve: never
+    /// automatic, and symmetric for CG.
+    AmgSmoother smoother_for(const bool symmetric) const;
+    /// Smoother sweeps (Chebyshev degree) of @p resolved.
+    unsigned int smoother_sweeps_for(const AmgSmoother resolved) const;
     /// Its name for the run summary, e.g. "CG/GMRES + ML AMG".
     static std::string name(const LinearSolverType type);
   };

@@ -60,7 +60,9 @@ namespace softgrasp
     struct Cell
     {
       std::vector<dealii::types::global_dof_index> dofs;
-      std::vector<int>    local; ///< positions in the ghosted vector
+      std::vector<int> local;  ///< positions in the ghosted vector
+      std::vector<int> target; ///< local, or -1 for a constrained dof
+      bool direct = true;      ///< no row transformation, no constraint entries
       std::vector<double> G, D, Sigma, P;
       double              h2; ///< volume^(2/3) (m^2)
     };
@@ -73,6 +75,10 @@ namespace softgrasp
     const NodalConditions<dim>                   *conditions  = nullptr;
     mutable dealii::TrilinosWrappers::MPI::Vector distributed, ghosted,
         accumulated;
+    /// position of each ghosted-vector entry among the owned ones, or -1
+    std::vector<int> owned_position;
+    /// gradient() of the direct cells, per ghosted-vector entry (N)
+    mutable std::vector<double> buffer;
   };
 } // namespace softgrasp
 
