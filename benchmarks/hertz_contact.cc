@@ -36,7 +36,7 @@ main(int argc, char **argv)
   const double       depth       = argc > 9 ? std::stod(argv[9]) : 1e-4;
   const std::string  inexact     = argc > 10 ? argv[10] : "true";
   const std::string  block       = argc > 11 ? argv[11] : "true";
-  const std::string  reuse_amg   = argc > 12 ? argv[12] : "false";
+  const std::string  reuse_amg   = argc > 12 ? argv[12] : "true";
 
   ParameterHandler prm;
   softgrasp::MechanicsSolver<3>::declare_parameters(prm);

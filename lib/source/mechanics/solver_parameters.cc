@@ -418,10 +418,12 @@ namespace softgrasp
         "the current matrix. It is rebuilt once the iterations a solve "
         "needs beyond the first solve's with it took longer than building "
         "it did, and a solve that fails with a kept hierarchy is repeated "
-        "with a new one. Measured (doc/benchmarks.md): linear solves 1.2-1.35 "
-        "times faster on contact at nu = 0.45 and 1.3 times faster on the "
-        "108k-dof block at nu = 0.4999. 'false' builds it at every Newton "
-        "iteration.");
+        "with a new one. Measured (doc/benchmarks.md): linear solves 1.2-1.3 "
+        "times faster with the block preconditioner (the 108k-dof block at "
+        "nu = 0.4999, Hertz contact at nu = 0.45) and on the frictional "
+        "sphere_squeeze grasp; 1.25 times slower under CG on the condensed "
+        "tangent of the 108k-dof Hertz problem. 'false' builds it at every "
+        "Newton iteration.");
     prm.leave_subsection();
   }
 
