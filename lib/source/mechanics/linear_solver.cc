@@ -181,23 +181,6 @@ namespace softgrasp
     return finite_or_breakdown(x, result);
   }
 
-  namespace
-  {
-    /// ML's name of a resolved smoother.
-    const char *smoother_name(const AmgSmoother smoother)
-    {
-      switch (smoother)
-      {
-      case AmgSmoother::gauss_seidel:
-        return "Gauss-Seidel";
-      case AmgSmoother::symmetric_gauss_seidel:
-        return "symmetric Gauss-Seidel";
-      default:
-        return "Chebyshev";
-      }
-    }
-  } // namespace
-
   void LinearSolver::initialize_amg(
       const TrilinosWrappers::SparseMatrix &A,
       const bool                            symmetric,
@@ -209,7 +192,7 @@ namespace softgrasp
     Teuchos::ParameterList ml;
     ML_Epetra::SetDefaults("SA", ml);
     const AmgSmoother smoother = parameters.smoother_for(symmetric);
-    ml.set("smoother: type", smoother_name(smoother));
+    ml.set("smoother: type", LinearSolverParameters::smoother_name(smoother));
     ml.set("smoother: sweeps",
            static_cast<int>(parameters.smoother_sweeps_for(smoother)));
     ml.set("aggregation: type", "Uncoupled");

@@ -458,6 +458,15 @@ namespace softgrasp
     }
   }
 
+  std::string LinearSolverParameters::smoother_name(const AmgSmoother smoother)
+  {
+    // the parameter's names are ML's
+    for (const auto &[name, value] : smoother_names)
+      if (value == smoother)
+        return name;
+    return "Chebyshev";
+  }
+
   unsigned int
   LinearSolverParameters::smoother_sweeps_for(const AmgSmoother resolved) const
   {

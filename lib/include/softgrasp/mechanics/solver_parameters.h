@@ -168,6 +168,8 @@ namespace softgrasp
     /// The smoother for a CG (@p symmetric) or a GMRES solve: never
     /// automatic, and symmetric for CG.
     AmgSmoother smoother_for(const bool symmetric) const;
+    /// The name of @p smoother (also ML's "smoother: type").
+    static std::string smoother_name(const AmgSmoother smoother);
     /// Smoother sweeps (Chebyshev degree) of @p resolved.
     unsigned int smoother_sweeps_for(const AmgSmoother resolved) const;
     /// Its name for the run summary, e.g. "CG/GMRES + ML AMG".
