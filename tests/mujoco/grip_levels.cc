@@ -37,15 +37,18 @@ main(int argc, char **argv)
   prm.set("Directory", "output-sweep");
   prm.leave_subsection();
 
+  // a run of the test starts afresh: a record left by an earlier run would
+  // be reused, with no levels run
+  std::filesystem::remove_all("output-sweep");
   PullSweepStudy study(MPI_COMM_WORLD, prm);
   GraspPullSweep sweep(
       MPI_COMM_WORLD, prm, PARAMETER_FILES "/grasp_pull_sweep.prm", study);
   std::ostringstream log;
   sweep.run_rigid(log);
-  const auto  &levels = sweep.rigid_levels();
-  const auto  &p      = sweep.parameters().rigid;
-  const double mu     = levels.front().friction;
+  const auto &levels = sweep.rigid_levels();
+  const auto &p      = sweep.parameters().rigid;
   SG_CHECK(levels.size() == 4, "four levels");
+  const double mu = levels.front().friction;
   SG_CHECK_CLOSE(levels.back().target_force, 40, 1e-12, 0, "top level");
   double previous_closure = -1;
   for (const auto &level : levels)

@@ -1,6 +1,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/fe/fe_values_extractors.h>
 #include <softgrasp/base/plane_strain.h>
+#include <softgrasp/base/simd.h>
 #include <softgrasp/mechanics/cell_assembler.h>
 
 namespace softgrasp
@@ -63,10 +64,30 @@ namespace softgrasp
       , grad_u(quadrature.size())
       , J(quadrature.size())
       , JxW(quadrature.size())
-      , grad_Nx(quadrature.size(),
-                std::vector<Tensor<2, dim>>(fe.n_dofs_per_cell()))
+      , grad_x(quadrature.size(),
+               std::vector<Tensor<1, dim>>(fe.n_dofs_per_cell() / dim))
+      , component(fe.n_dofs_per_cell())
+      , node(fe.n_dofs_per_cell())
+      , dof(fe.n_dofs_per_cell())
       , dilatation(dilatation_degree)
   {
+    const unsigned int n_nodes = fe.n_dofs_per_cell() / dim;
+    const unsigned int width   = simd::width;
+    stride                     = (n_nodes + width - 1) / width * width;
+    grad_j.resize(dim * stride);
+    tau_grad.resize(dim * stride);
+    c_grad.resize(dim * dim * dim * stride);
+    node_tangent.resize(dim * dim * n_nodes * stride);
+    AssertThrow(fe.is_primitive() && fe.n_components() == dim &&
+                    fe.n_dofs_per_cell() % dim == 0,
+                ExcMessage("The solid's element must be a primitive vector "
+                           "element with one node per dim DoFs."));
+    for (unsigned int k = 0; k < fe.n_dofs_per_cell(); ++k)
+    {
+      component[k] = fe.system_to_component_index(k).first;
+      node[k]      = fe.system_to_component_index(k).second;
+      dof[node[k] * dim + component[k]] = k;
+    }
   }
 
   template <int dim>
@@ -82,7 +103,15 @@ namespace softgrasp
       , grad_u(o.grad_u)
       , J(o.J)
       , JxW(o.JxW)
-      , grad_Nx(o.grad_Nx)
+      , grad_x(o.grad_x)
+      , component(o.component)
+      , node(o.node)
+      , dof(o.dof)
+      , stride(o.stride)
+      , grad_j(o.grad_j)
+      , tau_grad(o.tau_grad)
+      , c_grad(o.c_grad)
+      , node_tangent(o.node_tangent)
       , dilatation(o.dilatation)
   {
   }
@@ -149,6 +178,123 @@ namespace softgrasp
 
   template <int dim>
   void
+  CellAssembler<dim>::spatial_gradients(const TrilinosWrappers::MPI::Vector &u,
+                                        AssemblyScratchData<dim> &scratch)
+  {
+    const FEValues<dim> &fe_values = scratch.fe_values;
+    const unsigned int   n_nodes   = scratch.grad_x[0].size();
+    fe_values[displacement].get_function_gradients(u, scratch.grad_u);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+    {
+      const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + scratch.grad_u[q];
+      scratch.J[q]           = determinant(F);
+      scratch.JxW[q]         = fe_values.JxW(q);
+      if (!(scratch.J[q] > 0) || !std::isfinite(scratch.J[q]))
+        throw InvertedMaterialState(scratch.J[q]);
+      const Tensor<2, dim> F_inv = invert(F);
+      for (unsigned int I = 0; I < n_nodes; ++I)
+        scratch.grad_x[q][I] =
+            fe_values.shape_grad(scratch.dof[I * dim], q) * F_inv;
+    }
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::add_tangent(const unsigned int             q,
+                                       const SymmetricTensor<4, dim> &Jc,
+                                       const SymmetricTensor<2, dim> &tau,
+                                       const double                   JxW,
+                                       AssemblyScratchData<dim>      &scratch)
+  {
+    // K_(I c)(J d) = g_I . (cc_{c . d .} g_J) + delta_cd g_I . tau g_J with
+    // g = grad_x N (cc's minor symmetries make sym() of the gradients void),
+    // in SIMD lanes over J.
+    using V                    = simd::Double;
+    const unsigned int n_nodes = scratch.grad_x[q].size();
+    const unsigned int stride  = scratch.stride;
+    const unsigned int width   = simd::width;
+    const double      *g       = scratch.grad_j.data();
+    double             cc[dim][dim][dim][dim];
+    for (unsigned int c = 0; c < dim; ++c)
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            cc[c][d][a][b] = Jc[c][a][d][b] * JxW;
+    for (unsigned int J = 0; J < n_nodes; ++J)
+      for (unsigned int b = 0; b < dim; ++b)
+        scratch.grad_j[b * stride + J] = scratch.grad_x[q][J][b];
+    for (unsigned int j = 0; j < stride; j += width)
+    {
+      V gj[dim];
+      for (unsigned int b = 0; b < dim; ++b)
+        gj[b] = simd::load(g + b * stride + j);
+      for (unsigned int a = 0; a < dim; ++a)
+      {
+        V t = 0.;
+        for (unsigned int b = 0; b < dim; ++b)
+          t += (tau[a][b] * JxW) * gj[b];
+        simd::store(t, &scratch.tau_grad[a * stride + j]);
+      }
+      for (unsigned int c = 0; c < dim; ++c)
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int a = 0; a < dim; ++a)
+          {
+            V h = 0.;
+            for (unsigned int b = 0; b < dim; ++b)
+              h += cc[c][d][a][b] * gj[b];
+            simd::store(
+                h, &scratch.c_grad[((c * dim + d) * dim + a) * stride + j]);
+          }
+    }
+    for (unsigned int cd = 0; cd < dim * dim; ++cd)
+    {
+      const bool    diagonal = cd % (dim + 1) == 0;
+      const double *h        = &scratch.c_grad[cd * dim * stride];
+      for (unsigned int I = 0; I < n_nodes; ++I)
+      {
+        double *row = &scratch.node_tangent[(cd * n_nodes + I) * stride];
+        for (unsigned int j = 0; j <= I; j += width)
+        {
+          V value = simd::load(row + j);
+          for (unsigned int a = 0; a < dim; ++a)
+          {
+            const V h_a = simd::load(h + a * stride + j);
+            value += g[a * stride + I] * h_a;
+            if (diagonal)
+            {
+              const V t = simd::load(&scratch.tau_grad[a * stride + j]);
+              value += g[a * stride + I] * t;
+            }
+          }
+          simd::store(value, row + j);
+        }
+      }
+    }
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::scatter_tangent(AssemblyScratchData<dim> &scratch,
+                                           FullMatrix<double>       &matrix)
+  {
+    const unsigned int               n_nodes = scratch.grad_x[0].size();
+    const std::vector<unsigned int> &dof     = scratch.dof;
+    for (unsigned int c = 0; c < dim; ++c)
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int I = 0; I < n_nodes; ++I)
+        {
+          double *row = &scratch.node_tangent[((c * dim + d) * n_nodes + I) *
+                                              scratch.stride];
+          // the node block (I, I) is symmetric: its lower half suffices
+          for (unsigned int J = 0; J < (d > c ? I : I + 1); ++J)
+          {
+            const unsigned int k = dof[I * dim + c], l = dof[J * dim + d];
+            matrix(std::max(k, l), std::min(k, l)) += row[J];
+          }
+          std::fill(row, row + scratch.stride, 0.);
+        }
+  }
+
+  template <int dim>
+  void
   CellAssembler<dim>::assemble_volume(const TrilinosWrappers::MPI::Vector &u,
                                       const Material &material,
                                       const bool      with_matrix,
@@ -157,23 +303,11 @@ namespace softgrasp
                                       AssemblyScratchData<dim>     &scratch,
                                       AssemblyCopyData             &copy) const
   {
-    const FEValues<dim>      &fe_values = scratch.fe_values;
-    const FiniteElement<dim> &fe        = fe_values.get_fe();
-    const unsigned int        n_q       = fe_values.n_quadrature_points;
-    const unsigned int        n         = fe.n_dofs_per_cell();
-    fe_values[displacement].get_function_gradients(u, scratch.grad_u);
-
-    for (unsigned int q = 0; q < n_q; ++q)
-    {
-      const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + scratch.grad_u[q];
-      scratch.J[q]           = determinant(F);
-      scratch.JxW[q]         = fe_values.JxW(q);
-      if (!(scratch.J[q] > 0) || !std::isfinite(scratch.J[q]))
-        throw InvertedMaterialState(scratch.J[q]);
-      const Tensor<2, dim> F_inv = invert(F);
-      for (unsigned int k = 0; k < n; ++k)
-        scratch.grad_Nx[q][k] = fe_values[displacement].gradient(k, q) * F_inv;
-    }
+    const FEValues<dim> &fe_values = scratch.fe_values;
+    const unsigned int   n_q       = fe_values.n_quadrature_points;
+    const unsigned int   n         = copy.internal.size();
+    const unsigned int   n_nodes   = scratch.grad_x[0].size();
+    spatial_gradients(u, scratch);
 
     const bool mixed = formulation == Formulation::mixed_upJ;
     if (mixed && given != nullptr)
@@ -192,8 +326,6 @@ namespace softgrasp
 
     const bool         gravity = boundary_conditions.has_gravity();
     Material::Response response;
-    std::vector<SymmetricTensor<2, dim>> sym(n);
-    std::vector<SymmetricTensor<2, dim>> Jc_sym(n);
     for (unsigned int q = 0; q < n_q; ++q)
     {
       const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + scratch.grad_u[q];
@@ -211,42 +343,26 @@ namespace softgrasp
       const SymmetricTensor<2, dim> tau = restrict<dim>(response.stress);
       const double                  JxW = scratch.JxW[q];
 
-      Tensor<1, dim> body_force;
+      // f_(I c) = int (tau grad_x N_I)_c dV
+      for (unsigned int I = 0; I < n_nodes; ++I)
+      {
+        const Tensor<1, dim> f = tau * scratch.grad_x[q][I];
+        for (unsigned int c = 0; c < dim; ++c)
+          copy.internal[scratch.dof[I * dim + c]] += f[c] * JxW;
+      }
       if (gravity)
-        body_force = material.density() * boundary_conditions.gravity(X);
-
-      for (unsigned int k = 0; k < n; ++k)
       {
-        sym[k] = symmetrize(scratch.grad_Nx[q][k]);
-        copy.internal[k] += (sym[k] * tau) * JxW;
-        if (gravity)
-        {
-          const unsigned int c = fe.system_to_component_index(k).first;
-          copy.external[k] += fe_values.shape_value(k, q) * body_force[c] * JxW;
-        }
+        const Tensor<1, dim> body_force =
+            material.density() * boundary_conditions.gravity(X);
+        for (unsigned int k = 0; k < n; ++k)
+          copy.external[k] += fe_values.shape_value(k, q) *
+                              body_force[scratch.component[k]] * JxW;
       }
-      if (!with_matrix)
-        continue;
-
-      const SymmetricTensor<4, dim> Jc = restrict<dim>(response.tangent);
-      for (unsigned int l = 0; l < n; ++l)
-        Jc_sym[l] = Jc * sym[l];
-      for (unsigned int k = 0; k < n; ++k)
-      {
-        const unsigned int ck = fe.system_to_component_index(k).first;
-        for (unsigned int l = 0; l <= k; ++l)
-        {
-          double value = sym[k] * Jc_sym[l];
-          if (fe.system_to_component_index(l).first == ck)
-          {
-            // geometric stiffness: grad N_k . tau . grad N_l (one component)
-            value +=
-                scratch.grad_Nx[q][k][ck] * (tau * scratch.grad_Nx[q][l][ck]);
-          }
-          copy.matrix(k, l) += value * JxW;
-        }
-      }
+      if (with_matrix)
+        add_tangent(q, restrict<dim>(response.tangent), tau, JxW, scratch);
     }
+    if (with_matrix)
+      scatter_tangent(scratch, copy.matrix);
 
     if (mixed && (with_matrix || given != nullptr))
       add_dilatation_terms(with_matrix, scratch, copy);
@@ -315,7 +431,9 @@ namespace softgrasp
     for (unsigned int q = 0; q < n_q; ++q)
       for (unsigned int k = 0; k < n; ++k)
       {
-        const double div = trace(scratch.grad_Nx[q][k]);
+        // div_x of DoF k's shape function: component c of grad_x N_I
+        const double div =
+            scratch.grad_x[q][scratch.node[k]][scratch.component[k]];
         for (unsigned int a = 0; a < nb; ++a)
           G(a, k) += d.basis(a, q) * scratch.J[q] * div * scratch.JxW[q];
       }

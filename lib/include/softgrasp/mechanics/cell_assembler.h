@@ -28,12 +28,25 @@ namespace softgrasp
                         const unsigned int                 dilatation_degree);
     AssemblyScratchData(const AssemblyScratchData &other);
 
-    dealii::FEValues<dim>                            fe_values;
-    dealii::FEFaceValues<dim>                        fe_face_values;
-    std::vector<dealii::Tensor<2, dim>>              grad_u;
-    std::vector<double>                              J, JxW;
-    std::vector<std::vector<dealii::Tensor<2, dim>>> grad_Nx; ///< [q][k]
-    ElementDilatation<dim>                           dilatation;
+    dealii::FEValues<dim>               fe_values;
+    dealii::FEFaceValues<dim>           fe_face_values;
+    std::vector<dealii::Tensor<2, dim>> grad_u;
+    std::vector<double>                 J, JxW;
+    /// Spatial gradients grad_x N_I = F^-T grad_X N_I of the scalar shape
+    /// functions of the displacement element, [q][I] (1/m). DoF k of the
+    /// primitive vector element is component[k] of node[k]; its shape
+    /// gradient is e_c (x) grad_x N_I.
+    std::vector<std::vector<dealii::Tensor<1, dim>>> grad_x;
+    std::vector<unsigned int>                        component, node;
+    std::vector<unsigned int> dof; ///< of (node I, component c): [I dim + c]
+    /// Work arrays of the tangent, node index J fastest with the node count
+    /// padded to the SIMD width (stride): the spatial gradients [b][J]
+    /// (1/m), tau grad_x N_J JxW [b][J] (N/m), cc_{c a d b} grad_x N_J[b]
+    /// JxW [(c dim + d) dim + a][J] (N/m), and the tangent summed over the
+    /// quadrature points [c dim + d][I][J] (N/m).
+    unsigned int           stride = 0;
+    std::vector<double>    grad_j, tau_grad, c_grad, node_tangent;
+    ElementDilatation<dim> dilatation;
   };
 
   /// What one cell contributes; copied into the global system serially.
@@ -132,6 +145,25 @@ namespace softgrasp
                      const InertiaTerm                           &inertia,
                      AssemblyScratchData<dim>                    &scratch,
                      AssemblyCopyData                            &copy) const;
+
+    /// The spatial shape gradients and J at every quadrature point; throws
+    /// InvertedMaterialState where J <= 0.
+    static void
+    spatial_gradients(const dealii::TrilinosWrappers::MPI::Vector &u,
+                      AssemblyScratchData<dim>                    &scratch);
+
+    /// Material and geometric tangent of one quadrature point, added to
+    /// scratch.node_tangent (lower triangle of node pairs, J <= I).
+    static void add_tangent(const unsigned int                     q,
+                            const dealii::SymmetricTensor<4, dim> &Jc,
+                            const dealii::SymmetricTensor<2, dim> &tau,
+                            const double                           JxW,
+                            AssemblyScratchData<dim>              &scratch);
+
+    /// scratch.node_tangent into the lower triangle of @p matrix, and
+    /// scratch.node_tangent zeroed for the next cell.
+    static void scatter_tangent(AssemblyScratchData<dim>   &scratch,
+                                dealii::FullMatrix<double> &matrix);
 
     void assemble_volume(const dealii::TrilinosWrappers::MPI::Vector &u,
                          const Material                              &material,
