@@ -281,15 +281,15 @@ namespace softgrasp
       for (unsigned int d = 0; d < dim; ++d)
         for (unsigned int I = 0; I < n_nodes; ++I)
         {
-          double *row = &scratch.node_tangent[((c * dim + d) * n_nodes + I) *
-                                              scratch.stride];
+          const double *row =
+              &scratch.node_tangent[((c * dim + d) * n_nodes + I) *
+                                    scratch.stride];
           // the node block (I, I) is symmetric: its lower half suffices
           for (unsigned int J = 0; J < (d > c ? I : I + 1); ++J)
           {
             const unsigned int k = dof[I * dim + c], l = dof[J * dim + d];
             matrix(std::max(k, l), std::min(k, l)) += row[J];
           }
-          std::fill(row, row + scratch.stride, 0.);
         }
   }
 
@@ -326,6 +326,10 @@ namespace softgrasp
 
     const bool         gravity = boundary_conditions.has_gravity();
     Material::Response response;
+    // zeroed here, not after the scatter: a cell whose material evaluation
+    // threw leaves partial sums behind
+    if (with_matrix)
+      std::fill(scratch.node_tangent.begin(), scratch.node_tangent.end(), 0.);
     for (unsigned int q = 0; q < n_q; ++q)
     {
       const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + scratch.grad_u[q];

@@ -160,8 +160,7 @@ namespace softgrasp
                             const double                           JxW,
                             AssemblyScratchData<dim>              &scratch);
 
-    /// scratch.node_tangent into the lower triangle of @p matrix, and
-    /// scratch.node_tangent zeroed for the next cell.
+    /// scratch.node_tangent into the lower triangle of @p matrix.
     static void scatter_tangent(AssemblyScratchData<dim>   &scratch,
                                 dealii::FullMatrix<double> &matrix);
 
