@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <softgrasp/base/atomic_file.h>
+#include <softgrasp/base/run_manifest.h>
 #include <stdexcept>
 
 namespace softgrasp
@@ -32,6 +33,7 @@ namespace softgrasp
 
     void write(const std::string &filename, const std::string &content)
     {
+      RunManifest::note(filename);
       const std::string tmp = temporary_name(filename);
       std::FILE        *out = std::fopen(tmp.c_str(), "wb");
       if (out == nullptr)
@@ -52,6 +54,7 @@ namespace softgrasp
 
     void commit(const std::string &from, const std::string &to)
     {
+      RunManifest::note(to);
       std::error_code error;
       fs::rename(from, to, error);
       if (error)

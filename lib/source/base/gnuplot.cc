@@ -2,6 +2,7 @@
 #include <cstdlib>
 #include <softgrasp/base/atomic_file.h>
 #include <softgrasp/base/gnuplot.h>
+#include <softgrasp/base/run_manifest.h>
 
 namespace softgrasp
 {
@@ -17,6 +18,8 @@ namespace softgrasp
              "scripts/install-dependencies.sh installs gnuplot).\n";
       return false;
     }
+    for (const auto &picture : pictures)
+      RunManifest::note(directory + "/" + picture);
     const std::string command =
         "cd '" + directory + "' && gnuplot '" + script + "' 2>/dev/null";
     bool ok = std::system(command.c_str()) == 0;

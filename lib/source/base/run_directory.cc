@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/run_directory.h>
+#include <softgrasp/base/run_manifest.h>
 #include <unistd.h>
 #include <vector>
 
@@ -84,43 +85,53 @@ namespace softgrasp
       return "Cannot lock the output directory '" + directory + "'.";
     }
 
-    /// The entries of @p directory that an earlier run named @p base wrote.
-    std::vector<fs::path> earlier_results(const std::string &directory,
-                                          const std::string &base)
+    /**
+     * The entries of @p directory that an earlier run wrote, as its
+     * manifest lists them (and the temporary files of those it was killed
+     * writing); never anything else.
+     */
+    std::vector<fs::path> earlier_results(const std::string &directory)
     {
       std::vector<fs::path> found;
-      for (const auto &entry : fs::directory_iterator(directory))
-      {
-        const std::string name = entry.path().filename().string();
-        if (name.rfind(base, 0) == 0 || name.rfind("checkpoint", 0) == 0)
-          found.push_back(entry.path());
-      }
+      std::error_code       ignored;
+      for (const auto &name : RunManifest::read(directory))
+        for (const auto &candidate : {name, name + ".partial"})
+        {
+          const fs::path path = fs::path(directory) / candidate;
+          if (fs::exists(fs::symlink_status(path, ignored)))
+            found.push_back(path);
+        }
       return found;
     }
 
     /// Apply @p policy to an earlier run's results; "" or an error.
     std::string clear_earlier_results(const std::string    &directory,
-                                      const std::string    &base,
                                       const ExistingResults policy,
                                       std::ostream         &log)
     {
-      const auto found = earlier_results(directory, base);
+      const auto     found = earlier_results(directory);
+      const fs::path manifest =
+          fs::path(directory) / RunManifest::manifest_name;
       if (found.empty())
         return "";
       if (policy == ExistingResults::refuse)
         return "The output directory '" + directory +
                "' holds the results of an earlier run (e.g. '" +
-               found.front().filename().string() +
-               "'). Fix: set 'Output/Existing results' to 'move aside' (kept "
-               "in a subfolder) or 'replace' (deleted), choose another "
-               "'Output/Directory', or set 'Checkpoint/Resume = true' to "
-               "continue that run.";
+               found.front().filename().string() + "'; its '" +
+               RunManifest::manifest_name +
+               "' lists them all). Fix: set 'Output/Existing results' to "
+               "'move aside' (kept in a subfolder) or 'replace' (deleted), "
+               "choose another 'Output/Directory', or set 'Checkpoint/Resume "
+               "= true' to continue that run.";
       if (policy == ExistingResults::replace)
       {
         for (const auto &path : found)
           fs::remove_all(path);
-        log << "Deleted " << found.size() << " file(s) of an earlier run in '"
-            << directory << "' ('Output/Existing results = replace')."
+        fs::remove(manifest);
+        log << "Deleted " << found.size() << " file(s) and folder(s) of an "
+            << "earlier run in '" << directory
+            << "' ('Output/Existing results = replace'; only what its "
+            << RunManifest::manifest_name << " listed, nothing else)."
             << std::endl;
         return "";
       }
@@ -133,10 +144,13 @@ namespace softgrasp
       fs::create_directory(aside);
       for (const auto &path : found)
         fs::rename(path, aside / path.filename());
-      log << "Moved " << found.size() << " file(s) of an earlier run in '"
-          << directory << "' to '" << aside.string()
-          << "' (delete it when no longer needed; 'Output/Existing results' "
-             "chooses what happens to earlier results)."
+      fs::rename(manifest, aside / manifest.filename());
+      log << "Moved " << found.size() << " file(s) and folder(s) of an "
+          << "earlier run in '" << directory << "' to '" << aside.string()
+          << "' (only what its " << RunManifest::manifest_name
+          << " listed; delete the folder when no longer needed; "
+             "'Output/Existing results' chooses what happens to earlier "
+             "results)."
           << std::endl;
       return "";
     }
@@ -144,7 +158,6 @@ namespace softgrasp
 
   RunDirectory::RunDirectory(MPI_Comm              comm,
                              const std::string    &directory,
-                             const std::string    &base_name,
                              const ExistingResults existing,
                              const bool            resume,
                              std::ostream         &log)
@@ -170,7 +183,12 @@ namespace softgrasp
         {
           lock_file = directory + "/" + lock_name;
           if (!resume)
-            error = clear_earlier_results(directory, base_name, existing, log);
+            error = clear_earlier_results(directory, existing, log);
+          if (error.empty())
+          {
+            RunManifest::open(directory, resume);
+            manifest_directory = directory;
+          }
         }
       }
       catch (const std::exception &e)
@@ -191,6 +209,8 @@ namespace softgrasp
 
   RunDirectory::~RunDirectory()
   {
+    if (!manifest_directory.empty())
+      RunManifest::close(manifest_directory);
     if (!lock_file.empty())
       unlink(lock_file.c_str());
   }

@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <map>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/io/checkpoint.h>
 #include <sstream>
 
@@ -154,11 +155,18 @@ namespace softgrasp
                 " MiB needed). The previous checkpoint is kept. Fix: free "
                 "disk space, or set 'Checkpoint/Interval = 0'.";
       else
-      {
-        fs::remove_all(partial, ignored);
-        if (!fs::create_directories(partial, ignored) && ignored)
-          error = "Cannot create '" + partial + "': " + ignored.message();
-      }
+        try
+        {
+          for (const auto &entry : {partial, target, previous})
+            RunManifest::note(entry);
+          fs::remove_all(partial, ignored);
+          if (!fs::create_directories(partial, ignored) && ignored)
+            error = "Cannot create '" + partial + "': " + ignored.message();
+        }
+        catch (const std::exception &e)
+        {
+          error = e.what();
+        }
     }
     error = Utilities::MPI::broadcast(comm, error, 0);
     if (!error.empty())
@@ -311,6 +319,13 @@ namespace softgrasp
         // replace the good one by it.
         const std::string newest = directory + "/checkpoint";
         std::error_code   ignored;
+        try
+        { // best effort, as the rename below
+          RunManifest::note(newest + ".damaged");
+        }
+        catch (const std::exception &)
+        {
+        }
         fs::remove_all(newest + ".damaged", ignored);
         fs::rename(newest, newest + ".damaged", ignored);
         log << "Warning: the newest checkpoint cannot be used:" << reasons

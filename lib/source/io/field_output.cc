@@ -2,6 +2,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <iomanip>
 #include <softgrasp/base/atomic_file.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/io/field_output.h>
 #include <softgrasp/postprocess/strain_postprocessor.h>
 #include <softgrasp/postprocess/stress_postprocessor.h>
@@ -107,10 +108,22 @@ namespace softgrasp
          << ".vtu";
     const std::string file    = directory + "/" + name.str();
     const std::string partial = AtomicFile::temporary_name(file);
+    std::string       problem;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+      { // listed before any rank creates it
+        RunManifest::note(file);
+      }
+      catch (const std::exception &e)
+      {
+        problem = e.what();
+      }
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      throw std::runtime_error(problem);
     data_out.write_vtu_in_parallel(partial, comm);
     // MPI-IO reports a failed write only on stderr: check the file whole
     // before it gets its name, on rank 0, and fail on all ranks.
-    std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
     {
       problem = AtomicFile::check_written(partial, "</VTKFile>\n", true);

@@ -4,6 +4,7 @@
 #include <softgrasp/base/atomic_file.h>
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/io/hdf5_record.h>
 #include <stdexcept>
 
@@ -14,6 +15,7 @@ namespace softgrasp
   void Hdf5Record::write(const std::string                       &filename,
                          const std::function<void(HDF5::File &)> &fill)
   {
+    RunManifest::note(filename);
     const std::string temporary = AtomicFile::temporary_name(filename);
     try
     {

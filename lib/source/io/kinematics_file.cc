@@ -4,6 +4,7 @@
 #include <fstream>
 #include <hdf5.h>
 #include <softgrasp/base/atomic_file.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/io/kinematics_file.h>
 #include <tuple>
@@ -399,6 +400,7 @@ namespace softgrasp
   void write_kinematics_file(const KinematicsData &data,
                              const std::string    &filename)
   {
+    RunManifest::note(filename);
     const std::string temporary = AtomicFile::temporary_name(filename);
     {
       // The HDF5 1.10 file format: its metadata (object headers with the

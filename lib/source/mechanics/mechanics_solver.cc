@@ -185,7 +185,6 @@ namespace softgrasp
     run_directory = std::make_unique<RunDirectory>(
         comm,
         solver_parameters.output.directory,
-        solver_parameters.output.base_name,
         solver_parameters.output.existing_results,
         solver_parameters.checkpoint.resume,
         std::cout);

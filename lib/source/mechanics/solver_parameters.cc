@@ -530,10 +530,12 @@ namespace softgrasp
         "move aside",
         Patterns::Selection(selection(existing_results_names)),
         "What a new run (not a resume) does with the results of an earlier "
-        "run in 'Directory' (the files whose names start with 'Base name', "
-        "and checkpoints): 'move aside' moves them into a subfolder "
-        "'previous-run-<n>', 'replace' deletes them, 'refuse' stops with an "
-        "error. A directory never mixes the files of two runs.");
+        "run in 'Directory', that is with the files and folders listed in "
+        "that run's manifest 'softgrasp-run-files.txt': 'move aside' moves "
+        "them into a subfolder 'previous-run-<n>', 'replace' deletes them, "
+        "'refuse' stops with an error. A directory never mixes the files of "
+        "two runs, and nothing that a run did not write (inputs, notes, "
+        "folders) is ever moved or deleted.");
     prm.leave_subsection();
   }
 
@@ -542,6 +544,13 @@ namespace softgrasp
     prm.enter_subsection("Output");
     directory    = prm.get("Directory");
     base_name    = prm.get("Base name");
+    if (base_name.empty() || base_name.find('/') != std::string::npos)
+      throw InputError("Parameter 'Output/Base name' is '" + base_name +
+                       "': it must be a non-empty file name prefix without "
+                       "'/' (the files are named '<Base name>_00001.vtu', "
+                       "'<Base name>.pvd', ...). Fix: set a name such as "
+                       "'solution', and choose the folder with 'Output/"
+                       "Directory'.");
     vtu_interval = prm.get_integer("VTU interval");
     verbose      = prm.get_bool("Verbose");
     existing_results =

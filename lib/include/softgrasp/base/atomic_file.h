@@ -9,7 +9,9 @@ namespace softgrasp
    * Output files are written whole or not at all: the content goes to a
    * temporary file next to the target, which is then renamed over it
    * (rename is atomic on POSIX file systems). A reader, or a run killed
-   * mid-write, never sees a half-written file.
+   * mid-write, never sees a half-written file. A file written or committed
+   * into an output directory that a run holds is listed in that run's
+   * manifest first (RunManifest).
    */
   namespace AtomicFile
   {

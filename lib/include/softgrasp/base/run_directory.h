@@ -21,18 +21,19 @@ namespace softgrasp
    * run (a lock file with the owner's host and process id; a stale lock of
    * a process that no longer exists is taken over), and, for a new run,
    * cleared of an earlier run's results as ExistingResults says, so that
-   * a directory never mixes two runs. The results of a run are the files
-   * and folders whose names start with its base name, and its checkpoints.
-   * All checks run on rank 0; an error reaches every rank as the same
-   * InputError, so no rank waits forever. The lock is removed by the
-   * destructor.
+   * a directory never mixes two runs. The results of a run are exactly what
+   * its manifest lists (RunManifest): a run records every file and folder
+   * it creates, and a later run moves or deletes only those, never a
+   * user's input, notes or folders, whatever their names. All checks run
+   * on rank 0; an error reaches every rank as the same InputError, so no
+   * rank waits forever. The destructor removes the lock and ends the
+   * recording.
    */
   class RunDirectory
   {
   public:
     RunDirectory(MPI_Comm           comm,
                  const std::string &directory,
-                 const std::string &base_name,
                  ExistingResults    existing,
                  bool               resume,
                  std::ostream      &log);
@@ -45,6 +46,8 @@ namespace softgrasp
 
   private:
     std::string lock_file; ///< empty on ranks other than 0
+    /// the directory whose manifest records this run (rank 0)
+    std::string manifest_directory;
   };
 } // namespace softgrasp
 
