@@ -25,7 +25,7 @@
 #include <iomanip>
 #include <iostream>
 #include <softgrasp/base/parameter_reader.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/simulation.h>
 #include <sstream>
 
 using namespace dealii;
@@ -108,11 +108,11 @@ main(int argc, char **argv)
         continue;
       const unsigned int steps = dofs > 5e5 ? 100 : 400;
       ParameterHandler   handler;
-      softgrasp::MechanicsSolver<3>::declare_parameters(handler);
+      softgrasp::Simulation<3>::declare_parameters(handler);
       softgrasp::ParameterReader reader;
-      softgrasp::MechanicsSolver<3>::add_passes(reader);
+      softgrasp::Simulation<3>::add_passes(reader);
       reader.read_string(handler, prm(n, degree, steps, kernel), "benchmark");
-      auto solver = softgrasp::MechanicsSolver<3>::create(comm, handler);
+      auto solver = softgrasp::Simulation<3>::create(comm, handler);
       std::streambuf *silenced = std::cout.rdbuf(nullptr);
       solver->run();
       std::cout.rdbuf(silenced);

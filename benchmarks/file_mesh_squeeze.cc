@@ -17,7 +17,7 @@
 #include <iomanip>
 #include <iostream>
 #include <softgrasp/base/parameter_reader.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/simulation.h>
 #include <softgrasp/mechanics/solid_system.h>
 #include <softgrasp/meshes/mesh_factory.h>
 #include <sstream>
@@ -31,9 +31,9 @@ namespace
            const std::string &mesh)
   {
     ParameterHandler prm;
-    softgrasp::MechanicsSolver<3>::declare_parameters(prm);
+    softgrasp::Simulation<3>::declare_parameters(prm);
     softgrasp::ParameterReader reader;
-    softgrasp::MechanicsSolver<3>::add_passes(reader);
+    softgrasp::Simulation<3>::add_passes(reader);
     reader.read_string(prm,
                        base + "subsection Mesh\n" + mesh +
                            "end\nsubsection Output\n set Directory = "
@@ -42,7 +42,7 @@ namespace
                            "replace\nend\n",
                        "benchmark parameters");
     Timer timer;
-    auto  solver = softgrasp::MechanicsSolver<3>::create(MPI_COMM_WORLD, prm);
+    auto  solver = softgrasp::Simulation<3>::create(MPI_COMM_WORLD, prm);
     solver->run();
     const double force =
         solver->contact_force_history().back().forces[0][0].normal_force();

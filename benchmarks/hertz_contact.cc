@@ -16,7 +16,7 @@
 #include <deal.II/base/mpi.h>
 #include <iostream>
 #include <softgrasp/base/parameter_reader.h>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/solvers/simulation.h>
 
 using namespace dealii;
 
@@ -39,9 +39,9 @@ main(int argc, char **argv)
   const std::string  reuse_amg   = argc > 12 ? argv[12] : "true";
 
   ParameterHandler prm;
-  softgrasp::MechanicsSolver<3>::declare_parameters(prm);
+  softgrasp::Simulation<3>::declare_parameters(prm);
   softgrasp::ParameterReader reader;
-  softgrasp::MechanicsSolver<3>::add_passes(reader);
+  softgrasp::Simulation<3>::add_passes(reader);
   reader.read_string(
       prm,
       softgrasp_tests::hertz_prm(n,
@@ -59,7 +59,7 @@ main(int argc, char **argv)
           "preconditioner = " +
           block + "\n set Reuse AMG = " + reuse_amg + "\nend\n",
       "benchmark");
-  softgrasp::QuasiStaticSolver<3> solver(
+  softgrasp::Simulation<3> solver(
       comm, softgrasp::SolverInputs<3>::parse(prm));
   solver.run();
 

@@ -19,7 +19,7 @@
 #include <iomanip>
 #include <iostream>
 #include <softgrasp/base/parameter_reader.h>
-#include <softgrasp/mechanics/quasi_static_solver.h>
+#include <softgrasp/solvers/simulation.h>
 #include <sstream>
 #include <sys/resource.h>
 
@@ -47,11 +47,11 @@ main(int argc, char **argv)
                                             argc > 6 ? argv[6] : "");
 
   ParameterHandler prm_handler;
-  softgrasp::MechanicsSolver<3>::declare_parameters(prm_handler);
+  softgrasp::Simulation<3>::declare_parameters(prm_handler);
   softgrasp::ParameterReader reader;
-  softgrasp::MechanicsSolver<3>::add_passes(reader);
+  softgrasp::Simulation<3>::add_passes(reader);
   reader.read_string(prm_handler, prm, "solver_scaling");
-  softgrasp::QuasiStaticSolver<3> solver(
+  softgrasp::Simulation<3> solver(
       comm, softgrasp::SolverInputs<3>::parse(prm_handler));
   solver.run();
 

@@ -117,7 +117,7 @@ namespace softgrasp_tests
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/simulation.h>
 
 namespace softgrasp_tests
 {
@@ -215,7 +215,7 @@ namespace softgrasp_tests
    * clamped to [last closed, first open]. Collective.
    */
   template <int dim>
-  double edge_contact_radius(const softgrasp::MechanicsSolver<dim> &solver)
+  double edge_contact_radius(const softgrasp::Simulation<dim> &solver)
   {
     const auto         &contact = *solver.contact();
     const auto         &u       = solver.system().ghosted_solution();

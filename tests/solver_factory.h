@@ -1,4 +1,4 @@
-// Build a solver (MechanicsSolver::create: 'Time/Integrator') from the text of
+// Build a solver (Simulation::create: 'Time/Integrator') from the text of
 // a parameter file, and the parameter files of the benchmark problems used by
 // several tests.
 #ifndef softgrasp_tests_solver_factory_h
@@ -6,22 +6,22 @@
 
 #include <memory>
 #include <softgrasp/base/parameter_reader.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/simulation.h>
 #include <sstream>
 #include <string>
 
 namespace softgrasp_tests
 {
   template <int dim>
-  std::unique_ptr<softgrasp::MechanicsSolver<dim>>
+  std::unique_ptr<softgrasp::Simulation<dim>>
   make_solver(const std::string &text)
   {
     dealii::ParameterHandler prm;
-    softgrasp::MechanicsSolver<dim>::declare_parameters(prm);
+    softgrasp::Simulation<dim>::declare_parameters(prm);
     softgrasp::ParameterReader reader;
-    softgrasp::MechanicsSolver<dim>::add_passes(reader);
+    softgrasp::Simulation<dim>::add_passes(reader);
     reader.read_string(prm, text, "test parameters");
-    return softgrasp::MechanicsSolver<dim>::create(MPI_COMM_WORLD, prm);
+    return softgrasp::Simulation<dim>::create(MPI_COMM_WORLD, prm);
   }
 
   /// Run a solver and return the last value of history column @p column.

@@ -30,8 +30,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/mechanics/mechanics_solver.h>
-#include <softgrasp/mechanics/solver_program.h>
+#include <softgrasp/solvers/simulation.h>
+#include <softgrasp/solvers/solver_program.h>
 
 int
 main(int argc, char **argv)
@@ -40,7 +40,7 @@ main(int argc, char **argv)
 
   softgrasp::SolverProgram program;
   program.default_parameter_file = "block_compression.prm";
-  program.report_3d = [](const softgrasp::MechanicsSolver<3> &solver)
+  program.report_3d = [](const softgrasp::Simulation<3> &solver)
   {
     const auto       &history = solver.history();
     const std::size_t last    = history.rows.size() - 1;

@@ -28,14 +28,14 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/mechanics/mechanics_solver.h>
-#include <softgrasp/mechanics/solver_program.h>
+#include <softgrasp/solvers/simulation.h>
+#include <softgrasp/solvers/solver_program.h>
 
 // Print the vertical displacement of the monitored corner next to a
 // reference value (m).
 template <int dim>
 void
-report_tip_displacement(const softgrasp::MechanicsSolver<dim> &solver,
+report_tip_displacement(const softgrasp::Simulation<dim> &solver,
                         const double                           reference,
                         const std::string                     &label)
 {
@@ -61,10 +61,10 @@ main(int argc, char **argv)
 
   // After the run: compare the tip deflection with the published values
   // (3D) or the plane-strain limit (2D).
-  program.report_2d = [](const softgrasp::MechanicsSolver<2> &solver) {
+  program.report_2d = [](const softgrasp::Simulation<2> &solver) {
     report_tip_displacement(solver, 13.77e-3, "converged plane-strain value");
   };
-  program.report_3d = [](const softgrasp::MechanicsSolver<3> &solver)
+  program.report_3d = [](const softgrasp::Simulation<3> &solver)
   {
     report_tip_displacement(
         solver,

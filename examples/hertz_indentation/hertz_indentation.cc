@@ -37,15 +37,14 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/mechanics/mechanics_solver.h>
-#include <softgrasp/mechanics/solver_program.h>
-#include <softgrasp/postprocess/contact_force_report.h>
+#include <softgrasp/solvers/simulation.h>
+#include <softgrasp/solvers/solver_program.h>
 #include <string>
 
 namespace
 {
   /// Why Hertz's formula does not apply to the run's set-up, or "".
-  std::string hertz_mismatch(const softgrasp::MechanicsSolver<3> &solver)
+  std::string hertz_mismatch(const softgrasp::Simulation<3> &solver)
   {
     const auto &bodies = solver.rigid_bodies().bodies();
     if (bodies.size() != 1 || bodies[0].geoms().size() != 1)
@@ -62,7 +61,7 @@ namespace
   }
 
   /// Compare the force on the sphere with Hertz's, if the set-up is his.
-  void report(const softgrasp::MechanicsSolver<3> &solver)
+  void report(const softgrasp::Simulation<3> &solver)
   {
     softgrasp::report_contact_forces(solver, "hertz_forces", std::cout);
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)

@@ -29,8 +29,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/mechanics/solver_program.h>
-#include <softgrasp/postprocess/contact_force_report.h>
+#include <softgrasp/solvers/solver_program.h>
+#include <softgrasp/solvers/simulation.h>
 
 int
 main(int argc, char **argv)
@@ -39,9 +39,9 @@ main(int argc, char **argv)
 
   softgrasp::SolverProgram program;
   program.default_parameter_file = "ironing.prm";
-  program.report_2d = [](const softgrasp::MechanicsSolver<2> &solver)
+  program.report_2d = [](const softgrasp::Simulation<2> &solver)
   { softgrasp::report_contact_forces(solver, "ironing_forces", std::cout); };
-  program.report_3d = [](const softgrasp::MechanicsSolver<3> &solver)
+  program.report_3d = [](const softgrasp::Simulation<3> &solver)
   { softgrasp::report_contact_forces(solver, "ironing_forces", std::cout); };
   return program.run(argc, argv);
 }

@@ -21,7 +21,7 @@ using namespace softgrasp_tests;
 namespace
 {
   /// Whether the contact conditions of @p solver leave a symmetric tangent.
-  bool symmetric(const softgrasp::MechanicsSolver<3> &solver)
+  bool symmetric(const softgrasp::Simulation<3> &solver)
   {
     const auto *mortar =
         dynamic_cast<const softgrasp::MortarContact<3> *>(solver.contact());

@@ -15,7 +15,7 @@
 #include "../tests.h"
 
 #include <filesystem>
-#include <softgrasp/mechanics/solver_program.h>
+#include <softgrasp/solvers/solver_program.h>
 #include <softgrasp/mujoco/grasp_pull_sweep.h>
 
 using namespace softgrasp;

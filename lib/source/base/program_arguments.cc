@@ -24,7 +24,11 @@ namespace softgrasp
       for (const auto &option : accepted)
         if (option.name == arg)
           own = &option;
-      if (arg == "--print-parameters")
+      if (own != nullptr && arguments.options.count(arg) > 0)
+        arguments.error = "the option '" + arg +
+                          "' is given twice. Fix: give it once (run the "
+                          "program once per value).";
+      else if (arg == "--print-parameters")
         arguments.print_parameters = true;
       else if (arg == "--help" || arg == "-h")
         arguments.help = true;

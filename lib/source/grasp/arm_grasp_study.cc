@@ -1,7 +1,7 @@
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/grasp/arm_grasp_study.h>
 #include <softgrasp/grasp/section_pictures.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/simulation.h>
 
 namespace softgrasp
 {
@@ -72,7 +72,7 @@ namespace softgrasp
     }
   } // namespace
 
-  void ArmGraspStudy::postprocess(const MechanicsSolver<3> &solver,
+  void ArmGraspStudy::postprocess(const Simulation<3> &solver,
                                   const KinematicsData     &phases)
   {
     const auto        &records = solver.contact_force_history();

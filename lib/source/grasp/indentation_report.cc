@@ -3,13 +3,13 @@
 #include <iostream>
 #include <softgrasp/grasp/grasp_pictures.h>
 #include <softgrasp/grasp/indentation_study.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/simulation.h>
 
 namespace softgrasp
 {
   using namespace dealii;
 
-  void IndentationStudy::summarise(const MechanicsSolver<3> &solver,
+  void IndentationStudy::summarise(const Simulation<3> &solver,
                                    const KinematicsData     &cut)
   {
     const auto  &records  = solver.contact_force_history();
@@ -25,7 +25,7 @@ namespace softgrasp
   }
 
   IndentationStudy::StateCheck
-  IndentationStudy::final_state_check(const MechanicsSolver<3> &solver) const
+  IndentationStudy::final_state_check(const Simulation<3> &solver) const
   {
     const auto &records = solver.contact_force_history();
     // Force balance on the body: the link forces against the supports.
@@ -51,7 +51,7 @@ namespace softgrasp
     return check;
   }
 
-  void IndentationStudy::write_link_table(const MechanicsSolver<3> &solver,
+  void IndentationStudy::write_link_table(const Simulation<3> &solver,
                                           const KinematicsData     &cut)
   {
     const double duration = cut.time.back() - cut.time.front();

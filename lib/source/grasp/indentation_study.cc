@@ -6,7 +6,7 @@
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/grasp/grasp_pictures.h>
 #include <softgrasp/grasp/indentation_study.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/simulation.h>
 #include <softgrasp/rigid/rigid_body_set.h>
 #include <sstream>
 
@@ -82,12 +82,12 @@ namespace softgrasp
     place_tissue(inputs, placement);
   }
 
-  void IndentationStudy::postprocess(const MechanicsSolver<3> &,
+  void IndentationStudy::postprocess(const Simulation<3> &,
                                      const KinematicsData &)
   {
   }
 
-  void IndentationStudy::assess_injury(const MechanicsSolver<3> &solver)
+  void IndentationStudy::assess_injury(const Simulation<3> &solver)
   {
     const auto  &records = solver.contact_force_history();
     const double time    = records.empty() ? 0 : records.back().time;
@@ -187,7 +187,7 @@ namespace softgrasp
                           parameters.target_link,
                           "Indentation study/Target link");
 
-    const auto solver_pointer = MechanicsSolver<3>::create(comm, inputs);
+    const auto solver_pointer = Simulation<3>::create(comm, inputs);
     auto      &solver         = *solver_pointer;
     if (parameters.target_force > 0)
     {

@@ -8,7 +8,7 @@
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/grasp/pull_sweep_study.h>
 #include <softgrasp/io/hdf5_record.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/simulation.h>
 #include <softgrasp/rigid/pose_trajectory.h>
 #include <sstream>
 
@@ -281,7 +281,7 @@ namespace softgrasp
       else
       {
         inputs.solver.checkpoint.resume = started;
-        auto solver = MechanicsSolver<3>::create(comm, inputs);
+        auto solver = Simulation<3>::create(comm, inputs);
         solver->set_stop_criterion(
             [&solver, b = b, g = g, target = forces[k]]()
             {
@@ -322,7 +322,7 @@ namespace softgrasp
     inputs.add_resume_setting("Study/Sweep", "grasp-and-pull");
     if (friction >= 0) // the resume settings keep the closing's
       inputs.contact.friction_coefficient = friction;
-    auto solver = MechanicsSolver<3>::create(comm, inputs);
+    auto solver = Simulation<3>::create(comm, inputs);
     try
     {
       solver->run();

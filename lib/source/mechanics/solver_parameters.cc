@@ -17,10 +17,6 @@ namespace softgrasp
     const std::vector<std::pair<std::string, PressureDegree>>
         pressure_degree_names = {{"k-1", PressureDegree::below_displacement},
                                  {"0", PressureDegree::constant}};
-    const std::vector<std::pair<std::string, TimeIntegrator>> integrator_names =
-        {{"quasi-static", TimeIntegrator::quasi_static},
-         {"implicit dynamic", TimeIntegrator::implicit_dynamic},
-         {"explicit dynamic", TimeIntegrator::explicit_dynamic}};
     const std::vector<std::pair<std::string, LinearSolverType>> solver_names = {
         {"direct", LinearSolverType::direct},
         {"iterative", LinearSolverType::iterative},
@@ -105,24 +101,26 @@ namespace softgrasp
     return q + "-P" + std::to_string(pressure_degree()) + " u-p-J";
   }
 
-  void TimeParameters::declare_parameters(ParameterHandler &prm)
+  void TimeParameters::declare_parameters(ParameterHandler        &prm,
+                                          const IntegratorChoices &integrators)
   {
+    if (integrators.empty())
+      throw std::logic_error("TimeParameters: no time integrator offered");
+    // the typed default if offered, else the first choice
+    std::string default_name = integrators.front().first;
+    std::string names, descriptions;
+    for (const auto &[name, description] : integrators)
+    {
+      names += (names.empty() ? "" : "|") + name;
+      descriptions += " '" + name + "': " + description + ".";
+      if (name == TimeParameters().integrator)
+        default_name = name;
+    }
     prm.enter_subsection("Time");
-    prm.declare_entry(
-        "Integrator",
-        "quasi-static",
-        Patterns::Selection(selection(integrator_names)),
-        "Time integration. 'quasi-static': static equilibrium at every load "
-        "step by Newton's method (inertia neglected; the 'Newton' and "
-        "'Linear solver' subsections apply). 'implicit dynamic': the same "
-        "Newton solver with the inertia of the lumped mass, backward Euler "
-        "in time (first order, damps the fast motion of a snap, so that a "
-        "slow load follows the static path where one exists and passes "
-        "through a snap where none does; t is physical time and the "
-        "history reports the kinetic energy). 'explicit dynamic': central "
-        "differences with a lumped mass and the stable time step (inertia "
-        "included; the 'Explicit dynamics' subsection applies, and 'Time "
-        "step' is the interval between recorded states).");
+    prm.declare_entry("Integrator",
+                      default_name,
+                      Patterns::Selection(names),
+                      "Time integration." + descriptions);
     prm.declare_entry("End time",
                       "1",
                       Patterns::Double(0),
@@ -245,7 +243,7 @@ namespace softgrasp
   {
     prm.enter_subsection("Time");
     const CheckedSection section(prm, "Time");
-    integrator    = lookup(integrator_names, prm.get("Integrator"));
+    integrator    = prm.get("Integrator");
     end_time      = section.get_positive("End time", "s");
     step_size     = section.get_positive("Time step", "s");
     minimum_step  = section.get_positive("Minimum time step", "s");
@@ -738,10 +736,11 @@ namespace softgrasp
     prm.leave_subsection();
   }
 
-  void SolverParameters::declare_parameters(ParameterHandler &prm)
+  void SolverParameters::declare_parameters(ParameterHandler        &prm,
+                                            const IntegratorChoices &integrators)
   {
     DiscretizationParameters::declare_parameters(prm);
-    TimeParameters::declare_parameters(prm);
+    TimeParameters::declare_parameters(prm, integrators);
     NewtonParameters::declare_parameters(prm);
     LinearSolverParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);

@@ -5,14 +5,11 @@
 #include <iomanip>
 #include <iostream>
 #include <softgrasp/base/atomic_file.h>
-#include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/gnuplot.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
-#include <softgrasp/base/program_arguments.h>
 #include <softgrasp/grasp/arm_grasp_study.h>
 #include <softgrasp/io/kinematics_file.h>
-#include <softgrasp/mechanics/solver_program.h>
 #include <softgrasp/mujoco/grasp_pull_sweep.h>
 #include <softgrasp/mujoco/grasp_simulation.h>
 #include <sstream>
@@ -169,26 +166,6 @@ namespace softgrasp
     }
   } // namespace
 
-  namespace
-  {
-    /// The level of "--level @p value": a number from 1 to @p levels, or an
-    /// InputError with the fix.
-    unsigned int level_number(const std::string &value,
-                              const unsigned int levels)
-    {
-      unsigned int level = 0;
-      if (!value.empty() &&
-          value.find_first_not_of("0123456789") == std::string::npos &&
-          value.size() < 4)
-        level = std::stoul(value);
-      if (level < 1 || level > levels)
-        throw InputError("--level " + value + " is not a level of this " +
-                         "sweep. Fix: give a number from 1 to " +
-                         std::to_string(levels) +
-                         " ('Grasp-and-pull sweep/Levels').");
-      return level;
-    }
-  } // namespace
 
   GraspPullSweep::GraspPullSweep(MPI_Comm           comm,
                                  ParameterHandler  &prm,
@@ -211,76 +188,6 @@ namespace softgrasp
     // element setting changed between runs costs only a repeated rigid
     // stage of a few seconds), and the hand's scene file.
     settings = study.settings_text() + "hand:\n" + text_of(grasp.scene_file);
-  }
-
-  int GraspPullSweep::main(int argc, char **argv)
-  {
-    const MPI_Comm comm      = MPI_COMM_WORLD;
-    const bool     root      = Utilities::MPI::this_mpi_process(comm) == 0;
-    const auto     arguments = ProgramArguments::parse(
-        argc,
-        argv,
-        "grasp_pull_sweep.prm",
-        {{"--close",
-              "",
-              "only the rigid stage and the finite element closing to every "
-                  "level (a cluster run's first job)"},
-             {"--level",
-              "k",
-              "only level k: what it needs of the rigid stage and the closing, "
-                  "then its pull (a job array's task)"},
-             {"--collect",
-              "",
-              "only merge the levels' records into the tables and the figure"}});
-    const int exit_code = arguments.handle(
-        argv[0],
-        "The grasp-and-pull sweep: MuJoCo's grasp and pull at every grip "
-        "level, then the finite element closing and pulls (doc/studies.md). "
-        "A killed sweep resumes where it stopped.",
-        root);
-    if (exit_code >= 0)
-      return exit_code;
-    const ErrorCommunicator error_comm(comm);
-    try
-    {
-      if (arguments.options.size() > 1)
-        throw InputError("--close, --level and --collect exclude each other. "
-                         "Fix: give one of them, or none for the whole "
-                         "sweep.");
-      ParameterHandler prm;
-      declare_parameters(prm);
-      SolverProgram::read_parameters<3>(prm, arguments.parameter_file);
-      if (arguments.print_parameters)
-      {
-        if (root)
-          prm.print_parameters(std::cout, ParameterHandler::PRM);
-        return 0;
-      }
-      PullSweepStudy     study(comm, prm);
-      GraspPullSweep     sweep(comm, prm, arguments.parameter_file, study);
-      const unsigned int level =
-          arguments.has("--level")
-              ? level_number(arguments.options.at("--level"),
-                             sweep.parameters().rigid.levels)
-              : 0;
-      sweep.run_rigid(std::cout);
-      if (arguments.has("--collect"))
-        sweep.collect(std::cout);
-      else if (arguments.has("--close"))
-        sweep.close(std::cout);
-      else if (level > 0)
-      {
-        sweep.close(std::cout, level);
-        sweep.pull(level, std::cout);
-      }
-      else
-        sweep.run_fe(std::cout);
-    }
-    catch (const std::exception &e)
-    {
-      return fatal_error(e, error_comm);
-    }
-    return 0;
   }
 
   void GraspPullSweep::run_rigid(std::ostream &log)

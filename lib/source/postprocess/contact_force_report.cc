@@ -2,7 +2,6 @@
 #include <iomanip>
 #include <softgrasp/base/atomic_file.h>
 #include <softgrasp/base/gnuplot.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
 #include <softgrasp/postprocess/contact_force_report.h>
 #include <sstream>
 
@@ -162,29 +161,22 @@ namespace softgrasp
     return run_gnuplot(directory, base + ".gnuplot", {picture}, log);
   }
 
-  template <int dim>
-  void report_contact_forces(const MechanicsSolver<dim> &solver,
-                             const std::string          &base,
-                             std::ostream               &out)
+  void report_contact_forces(MPI_Comm                               comm,
+                             const RigidBodySet                    &bodies,
+                             const std::vector<ContactForceRecord> &records,
+                             const unsigned int                     dim,
+                             const std::string                     &directory,
+                             const std::string                     &base,
+                             std::ostream                          &out)
   {
-    if (dealii::Utilities::MPI::this_mpi_process(
-            solver.system().communicator()) != 0)
+    if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    const ContactForceReport report(
-        solver.rigid_bodies(), solver.contact_force_history(), dim);
+    const ContactForceReport report(bodies, records, dim);
     if (report.empty())
       return;
     report.print(out);
-    const std::string directory = solver.parameters().output.directory;
     if (report.write_table_and_picture(directory, base, out))
       out << "Picture: " << directory << "/" << base << ".png (table " << base
           << ".dat)" << std::endl;
   }
-
-  template void report_contact_forces(const MechanicsSolver<2> &,
-                                      const std::string &,
-                                      std::ostream &);
-  template void report_contact_forces(const MechanicsSolver<3> &,
-                                      const std::string &,
-                                      std::ostream &);
 } // namespace softgrasp

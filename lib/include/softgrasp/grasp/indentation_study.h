@@ -6,14 +6,14 @@
 #include <softgrasp/grasp/link_force_history.h>
 #include <softgrasp/io/history_writer.h>
 #include <softgrasp/io/kinematics_file.h>
-#include <softgrasp/mechanics/solver_inputs.h>
+#include <softgrasp/solvers/solver_inputs.h>
 #include <softgrasp/postprocess/tissue_injury.h>
 #include <string>
 #include <vector>
 
 namespace softgrasp
 {
-  template <int dim> class MechanicsSolver;
+  template <int dim> class Simulation;
 
   /// The settings of a grasp study's finite element stage ("Indentation
   /// study" subsection), parsed once.
@@ -49,7 +49,7 @@ namespace softgrasp
    * e.g. "indentation, pull"), until their end or until a target normal
    * force on a chosen link.
    *
-   * The run is a MechanicsSolver<3> ('Time/Integrator': quasi-static or
+   * The run is a Simulation<3> ('Time/Integrator': quasi-static or
    * explicit dynamic) built from typed SolverInputs, parsed once from the
    * .prm; the study sets, in those typed values (never in the .prm):
    *  - the rigid bodies: every body of the file with geoms, moving on the
@@ -161,10 +161,10 @@ namespace softgrasp
       double balance     = 0;
       double penetration = 0;
     };
-    StateCheck final_state_check(const MechanicsSolver<3> &solver) const;
+    StateCheck final_state_check(const Simulation<3> &solver) const;
 
     /// Study-specific output after the run (all ranks, collective).
-    virtual void postprocess(const MechanicsSolver<3> &solver,
+    virtual void postprocess(const Simulation<3> &solver,
                              const KinematicsData     &phases);
 
     MPI_Comm             comm;
@@ -172,12 +172,12 @@ namespace softgrasp
     SolverInputs<3>      solver_inputs;
 
   private:
-    void summarise(const MechanicsSolver<3> &solver,
+    void summarise(const Simulation<3> &solver,
                    const KinematicsData     &phases);
-    void write_link_table(const MechanicsSolver<3> &solver,
+    void write_link_table(const Simulation<3> &solver,
                           const KinematicsData     &phases);
     /// Assess the final state (all ranks); write and print it on rank 0.
-    void assess_injury(const MechanicsSolver<3> &solver);
+    void assess_injury(const Simulation<3> &solver);
 
     double                        extra_angle = 0;
     Summary                       result;

@@ -5,6 +5,7 @@
 #include <deal.II/base/types.h>
 #include <softgrasp/base/run_directory.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace softgrasp
@@ -46,19 +47,10 @@ namespace softgrasp
     symmetric_gauss_seidel ///< forward and backward Gauss-Seidel
   };
 
-  /// Time integration of the solid ("Time/Integrator").
-  enum class TimeIntegrator
-  {
-    /// Implicit: static equilibrium at each load step (Newton), inertia
-    /// neglected; QuasiStaticSolver.
-    quasi_static,
-    /// Implicit with the lumped mass's inertia, backward Euler;
-    /// QuasiStaticSolver with its InertiaTerm.
-    implicit_dynamic,
-    /// Explicit central difference with lumped mass and inertia;
-    /// ExplicitSolver.
-    explicit_dynamic
-  };
+  /// The time integrators a program offers: (name, description) pairs,
+  /// e.g. the registered time steppers; TimeParameters' default
+  /// (quasi-static) is the default if offered, else the first.
+  using IntegratorChoices = std::vector<std::pair<std::string, std::string>>;
 
   /// Finite element discretisation ("Finite element" subsection).
   struct DiscretizationParameters
@@ -92,7 +84,8 @@ namespace softgrasp
   /// Load/time stepping ("Time" subsection).
   struct TimeParameters
   {
-    TimeIntegrator integrator = TimeIntegrator::quasi_static;
+    /// 'Time/Integrator': the name of a registered time stepper
+    std::string integrator = "quasi-static";
     double         end_time   = 1.0; ///< s
     /// nominal load step (quasi-static) or record interval (explicit), s
     double       step_size     = 0.1;
@@ -109,7 +102,8 @@ namespace softgrasp
     /// The start of the phase that the step starting at @p time belongs to.
     double phase_begin(const double time) const;
 
-    static void declare_parameters(dealii::ParameterHandler &prm);
+    static void declare_parameters(dealii::ParameterHandler &prm,
+                                   const IntegratorChoices  &integrators);
     void        parse_parameters(dealii::ParameterHandler &prm);
   };
 
@@ -254,7 +248,9 @@ namespace softgrasp
     ExplicitParameters       explicit_dynamics;
     LimitParameters          limits;
 
-    static void declare_parameters(dealii::ParameterHandler &prm);
+    /// @p integrators: the valid values of 'Time/Integrator'.
+    static void declare_parameters(dealii::ParameterHandler &prm,
+                                   const IntegratorChoices  &integrators);
     void        parse_parameters(dealii::ParameterHandler &prm);
   };
 } // namespace softgrasp

@@ -48,6 +48,8 @@ namespace softgrasp
    *  - pull(k): level k's pull, unless its record says it is finished;
    *  - collect(): every level's record into sweep_fe_levels.csv,
    *    sweep_fe_pulls.csv and the figure with both lines.
+   * The program studies/grasp_pull_sweep chooses the stages from its
+   * command line.
    */
   class GraspPullSweep
   {
@@ -62,14 +64,6 @@ namespace softgrasp
                    dealii::ParameterHandler &prm,
                    const std::string        &prm_file,
                    PullSweepStudy           &study);
-
-    /**
-     * The program: grasp_pull_sweep [--close | --level k | --collect]
-     * [--print-parameters] [file.prm] (default sweep file
-     * grasp_pull_sweep.prm). Errors become a message on stderr and exit
-     * code 1. MPI must be initialised by the caller.
-     */
-    static int main(int argc, char **argv);
 
     /// The rigid stage (rank 0 works; errors reach every rank).
     void run_rigid(std::ostream &log);

@@ -17,7 +17,7 @@ namespace softgrasp
    *   program [--print-parameters] [file.prm]
    *
    * reads the .prm ("Rigid environment", "Indentation study" and everything
-   * a MechanicsSolver<3> reads), then
+   * a Simulation<3> reads), then
    *  1. if "Indentation study/Rigid stage" is "run": MuJoCo closes the hand
    *     to the equilibrium grasp and records the indentation phase
    *     (GraspSimulation, on rank 0) into the kinematics file;

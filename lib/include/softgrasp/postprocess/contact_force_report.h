@@ -1,6 +1,7 @@
 #ifndef softgrasp_postprocess_contact_force_report_h
 #define softgrasp_postprocess_contact_force_report_h
 
+#include <deal.II/base/mpi.h>
 #include <ostream>
 #include <softgrasp/contact/contact_output.h>
 #include <softgrasp/rigid/rigid_body_set.h>
@@ -58,17 +59,18 @@ namespace softgrasp
     std::vector<std::string> geom_labels() const;
   };
 
-  template <int dim> class MechanicsSolver;
-
   /**
-   * After a run: print the ContactForceReport of @p solver on rank 0 and
-   * write @p base.dat and @p base.png into its output directory. Does
+   * After a run: print the ContactForceReport of @p records on rank 0 of
+   * @p comm and write @p base.dat and @p base.png into @p directory. Does
    * nothing for a run without rigid bodies.
    */
-  template <int dim>
-  void report_contact_forces(const MechanicsSolver<dim> &solver,
-                             const std::string          &base,
-                             std::ostream               &out);
+  void report_contact_forces(MPI_Comm                               comm,
+                             const RigidBodySet                    &bodies,
+                             const std::vector<ContactForceRecord> &records,
+                             unsigned int                           dim,
+                             const std::string                     &directory,
+                             const std::string                     &base,
+                             std::ostream                          &out);
 } // namespace softgrasp
 
 #endif

@@ -1,21 +1,22 @@
-#ifndef softgrasp_explicit_explicit_solver_h
-#define softgrasp_explicit_explicit_solver_h
+#ifndef softgrasp_solvers_explicit_stepper_h
+#define softgrasp_solvers_explicit_stepper_h
 
+#include <optional>
 #include <softgrasp/explicit/central_difference.h>
 #include <softgrasp/explicit/explicit_contact.h>
 #include <softgrasp/explicit/internal_force_operator.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
+#include <softgrasp/solvers/time_stepper.h>
 
 namespace softgrasp
 {
   /**
-   * Explicit dynamic, total-Lagrangian finite-strain solid
-   * ('Time/Integrator = explicit dynamic'): central differences
+   * Explicit dynamic time stepping of a total-Lagrangian finite-strain
+   * solid ('Time/Integrator = explicit dynamic'): central differences
    * (CentralDifference) with the lumped mass, matrix-free internal forces
    * (InternalForceOperator) and forward-increment Lagrange-multiplier
    * contact with Coulomb friction (ExplicitContact), on the same .prm
    * sections, SolidSystem, contact output and postprocessors as the
-   * quasi-static solver.
+   * implicit steppers.
    *
    * The step is the 'Explicit dynamics/Safety factor' times the critical
    * step of the current state, recomputed every 'Stable step interval'
@@ -28,37 +29,43 @@ namespace softgrasp
    * undone, the last good state is written (VTU and checkpoint), and the
    * run stops with a SolverFailure naming the cause and the fix.
    *
-   * Formulations: displacement, or 'mixed u-p-J' with the quasi-static
+   * Formulations: displacement, or 'mixed u-p-J' with the implicit
    * solver's element ('Finite element/Pressure degree': Q1-P0, Q2-P1 or
    * Q2-P0; the pressure is projected element by element). Loads:
    * prescribed displacements (Dirichlet, as functions of t) and contact
    * with the rigid bodies. Tractions, pressures and gravity are
    * not offered here yet (an InputError says so).
    */
-  template <int dim> class ExplicitSolver : public MechanicsSolver<dim>
+  template <int dim> class ExplicitStepper : public TimeStepper<dim>
   {
   public:
     using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
 
-    ExplicitSolver(MPI_Comm comm, const SolverInputs<dim> &inputs);
-
-    void run() override;
-
-    /// Added mass of the mass scaling, percent of the physical mass.
-    double added_mass_percent() const;
-    /// Integration steps taken so far.
-    unsigned long n_time_steps() const;
+    bool needs_tangent() const override;
+    bool has_inertia() const override;
+    unsigned int
+    n_checkpoint_fields(const SolverParameters &parameters) const override;
+    void check_inputs(const SimulationAccess<dim> &run) const override;
+    std::unique_ptr<ContactSurface<dim>>
+         make_contact(const SimulationAccess<dim> &run,
+                      double                       shear_modulus) override;
+    void run(const SimulationAccess<dim> &run) override;
 
   private:
-    std::unique_ptr<ContactSurface<dim>>
-         make_contact(const double shear_modulus) override;
-    bool needs_tangent() const override
-    {
-      return false;
-    }
-    void check_loads() const;
     /// Operator, lumped (and scaled) mass, fixed dofs, integrator.
     void setup_integrator();
+    /// The integrator's state: a fresh start (recorded) or the checkpoint.
+    void start(VectorType &u, VectorType &v);
+    /// Restore the integrator from the checkpoint's fields and scalars.
+    void restore(VectorType &u, VectorType &v);
+    /// The first time step (or the saved one), checked against the
+    /// critical step and the run's size limits; prints the summary.
+    void choose_time_step();
+    /// Integrate up to the recorded time @p t_record.
+    void advance_to(const double t_record);
+    /// Record, write and report the state at @p t_record; returns true
+    /// if the run ends here (stop criterion).
+    bool finish_record(const double t_record);
     void scale_mass(const double target_step);
     /// The time step over the critical step 2/omega_max: the safety factor
     /// times the stable fraction with the stiffness damping.
@@ -85,6 +92,8 @@ namespace softgrasp
       const dealii::Function<dim>    *function;
     };
 
+    /// The run being integrated (from make_contact() or run() on).
+    std::optional<SimulationAccess<dim>>        sim;
     ExplicitContact<dim>                       *explicit_contact = nullptr;
     dealii::AffineConstraints<double>           hanging;
     std::unique_ptr<InternalForceOperator<dim>> force;

@@ -3,8 +3,8 @@
 #include <iostream>
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
-#include <softgrasp/mechanics/mechanics_solver.h>
-#include <softgrasp/mechanics/solver_program.h>
+#include <softgrasp/solvers/simulation.h>
+#include <softgrasp/solvers/solver_program.h>
 #include <sstream>
 
 namespace softgrasp
@@ -48,9 +48,9 @@ namespace softgrasp
                                       const std::string &filename)
   {
     declare_dimension(prm, dim);
-    MechanicsSolver<dim>::declare_parameters(prm);
+    Simulation<dim>::declare_parameters(prm);
     ParameterReader reader;
-    MechanicsSolver<dim>::add_passes(reader);
+    Simulation<dim>::add_passes(reader);
     reader.read_file(prm, filename);
     if (prm.get_integer("Dimension") != dim)
       throw InputError("'Dimension' = " + prm.get("Dimension") + " in '" +
@@ -119,7 +119,7 @@ namespace softgrasp
         else
         {
           declare_dimension(prm);
-          MechanicsSolver<2>::declare_parameters(prm);
+          Simulation<2>::declare_parameters(prm);
         }
         if (root)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
@@ -130,7 +130,7 @@ namespace softgrasp
       if (dim == 2)
       {
         read_parameters<2>(prm, filename);
-        const auto solver = MechanicsSolver<2>::create(comm, prm);
+        const auto solver = Simulation<2>::create(comm, prm);
         solver->run();
         if (report_2d)
           report_2d(*solver);
@@ -138,7 +138,7 @@ namespace softgrasp
       else
       {
         read_parameters<3>(prm, filename);
-        const auto solver = MechanicsSolver<3>::create(comm, prm);
+        const auto solver = Simulation<3>::create(comm, prm);
         solver->run();
         if (report_3d)
           report_3d(*solver);

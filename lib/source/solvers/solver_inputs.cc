@@ -1,5 +1,5 @@
 #include <softgrasp/base/parameter_reader.h>
-#include <softgrasp/mechanics/solver_inputs.h>
+#include <softgrasp/solvers/solver_inputs.h>
 
 namespace softgrasp
 {

@@ -1,5 +1,5 @@
-#ifndef softgrasp_mechanics_solver_program_h
-#define softgrasp_mechanics_solver_program_h
+#ifndef softgrasp_solvers_solver_program_h
+#define softgrasp_solvers_solver_program_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
@@ -13,29 +13,29 @@ namespace softgrasp
    *   program [--print-parameters] [file.prm]
    *
    * reads "Dimension" (2: plane strain, 3) and then the whole file with
-   * every declaration pass, runs the MechanicsSolver<dim> that
+   * every declaration pass, runs the Simulation<dim> that
    * 'Time/Integrator' names (quasi-static or explicit), and turns input
    * errors and solver failures into a message on stderr and exit code 1.
    * @p after_run, if given, is called on rank 0 and all ranks after a
-   * successful run with the solver (as MechanicsSolver<2> or <3>) to
+   * successful run with the solver (as Simulation<2> or <3>) to
    * report results; use the overloads below.
    *
    * MPI must be initialised by the caller (Utilities::MPI::MPI_InitFinalize).
    */
-  template <int dim> class MechanicsSolver;
+  template <int dim> class Simulation;
 
   struct SolverProgram
   {
     std::string                                     default_parameter_file;
-    std::function<void(const MechanicsSolver<2> &)> report_2d;
-    std::function<void(const MechanicsSolver<3> &)> report_3d;
+    std::function<void(const Simulation<2> &)> report_2d;
+    std::function<void(const Simulation<3> &)> report_3d;
 
     int run(int argc, char **argv) const;
 
     /// Read @p filename's "Dimension" entry (2 or 3).
     static unsigned int read_dimension(const std::string &filename);
 
-    /// Declare and read everything a MechanicsSolver<dim> needs.
+    /// Declare and read everything a Simulation<dim> needs.
     template <int dim>
     static void read_parameters(dealii::ParameterHandler &prm,
                                 const std::string        &filename);

@@ -1,5 +1,5 @@
-#ifndef softgrasp_mechanics_solver_inputs_h
-#define softgrasp_mechanics_solver_inputs_h
+#ifndef softgrasp_solvers_solver_inputs_h
+#define softgrasp_solvers_solver_inputs_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <softgrasp/contact/contact_parameters.h>
@@ -15,7 +15,7 @@
 namespace softgrasp
 {
   /**
-   * Everything a MechanicsSolver is built from, as typed values: the
+   * Everything a Simulation is built from, as typed values: the
    * solver settings, the mesh (its generator and placement), the materials,
    * the boundary conditions, the contact settings and the rigid bodies.
    * parse() reads them from a .prm once; a study then changes the typed
@@ -37,7 +37,7 @@ namespace softgrasp
     std::vector<std::pair<std::string, std::string>> resume_settings;
 
     /// Parse all of them from @p prm (declared by
-    /// MechanicsSolver::declare_parameters and read with its passes).
+    /// Simulation::declare_parameters and read with its passes).
     static SolverInputs parse(dealii::ParameterHandler &prm);
 
     /// A setting that a study computed (e.g. the placement from its

@@ -1,0 +1,401 @@
+#include <cmath>
+#include <iomanip>
+#include <softgrasp/solvers/implicit_stepper.h>
+#include <sstream>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  ImplicitStepper<dim>::ImplicitStepper(const bool dynamic)
+      : dynamic(dynamic)
+  {
+  }
+
+  template <int dim> bool ImplicitStepper<dim>::needs_tangent() const
+  {
+    return true;
+  }
+
+  template <int dim> bool ImplicitStepper<dim>::has_inertia() const
+  {
+    return dynamic;
+  }
+
+  template <int dim>
+  unsigned int
+  ImplicitStepper<dim>::n_checkpoint_fields(const SolverParameters &) const
+  {
+    return dynamic ? 1 : 0; // the velocity
+  }
+
+  template <int dim>
+  std::unique_ptr<ContactSurface<dim>>
+  ImplicitStepper<dim>::make_contact(const SimulationAccess<dim> &run,
+                                     const double shear_modulus)
+  {
+    auto contact = std::make_unique<MortarContact<dim>>(run.contact_parameters(),
+                                                        run.rigid_bodies(),
+                                                        shear_modulus,
+                                                        run.timers());
+    contact->setup(run.solid());
+    run.solid().set_nodal_conditions(contact.get());
+    mortar = contact.get();
+    return contact;
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::set_inertia(const SimulationAccess<dim> &run,
+                                         const Vector                &u_n,
+                                         const double                 dt)
+  {
+    if (!dynamic)
+      return;
+    Vector owned(u_n);
+    owned.add(dt, velocity);
+    predictor = owned;
+    run.solid().set_inertia({&predictor, 1.0 / (dt * dt)});
+    if (mortar)
+      mortar->set_inertia(ghosted_mass, 1.0 / (dt * dt));
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::update_velocity(const SimulationAccess<dim> &run,
+                                             const Vector                &u_n,
+                                             const double                 dt)
+  {
+    if (!dynamic)
+      return;
+    velocity = run.solid().solution();
+    velocity -= u_n;
+    velocity /= dt;
+  }
+
+  template <int dim>
+  double
+  ImplicitStepper<dim>::kinetic_energy(const SimulationAccess<dim> &run) const
+  {
+    double energy = 0;
+    for (const auto i : mass.locally_owned_elements())
+      energy += 0.5 * mass[i] * velocity[i] * velocity[i];
+    return Utilities::MPI::sum(energy, run.communicator());
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::run(const SimulationAccess<dim> &run)
+  {
+    newton = std::make_unique<NewtonSolver<dim>>(run.parameters().newton,
+                                                 run.verbose_out());
+    if (!run.has_contact())
+      mortar = nullptr;
+    start(run);
+    const auto &time  = run.parameters().time;
+    RunState   &state = run.state();
+    double      dt    = state.step_size;
+    while (state.time < time.end_time * (1 - 1e-12))
+    {
+      // a step stays within its phase ('Time/Phases'), at most its step
+      const TimePhase phase       = time.phase_at(state.time);
+      unsigned int    cut_backs   = 0;
+      const Vector    u_converged = run.solid().solution();
+      dt = std::min(dt, phase.step);
+      const double t_new = take_step(run, phase, u_converged, dt, cut_backs);
+      update_velocity(run, u_converged, t_new - state.time);
+      state.time = t_new;
+      ++state.step;
+      record_step(run, t_new, cut_backs);
+      const bool stop = finish_step(run, dt);
+      const TimePhase next = time.phase_at(state.time);
+      if (next.end != phase.end)
+        dt = next.step; // a new phase starts with its own step
+      else if (cut_backs == 0)
+        dt = std::min(2 * dt, phase.step);
+      state.step_size = dt;
+      if (stop)
+      {
+        run.out() << "Stop criterion met at t = " << state.time << " s."
+                  << std::endl;
+        break;
+      }
+    }
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::start(const SimulationAccess<dim> &run)
+  {
+    auto &solid = run.solid();
+    if (dynamic)
+    {
+      const MPI_Comm comm = run.communicator();
+      mass                = solid.lumped_mass();
+      ghosted_mass.reinit(
+          solid.locally_owned_dofs(), solid.locally_relevant_dofs(), comm);
+      ghosted_mass = mass;
+      velocity.reinit(solid.locally_owned_dofs(), comm);
+      predictor.reinit(
+          solid.locally_owned_dofs(), solid.locally_relevant_dofs(), comm);
+      if (run.resumed())
+        velocity = run.restored_fields()[0];
+    }
+    previous_time = run.state().time;
+    if (mortar)
+    {
+      solid.update_ghosts();
+      mortar->accept_step(solid, run.state().time);
+    }
+    run.print_summary(dynamic ? "implicit dynamic" : "quasi-static");
+    run.progress().start(run.state().time, run.parameters().time.end_time);
+    if (!run.resumed())
+      start_fresh(run);
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::start_fresh(const SimulationAccess<dim> &run)
+  {
+    if (mortar)
+    {
+      const auto [inside, depth] = mortar->overlap_summary(
+          mortar->node_overlaps(0.0, run.solid().ghosted_solution()));
+      if (inside > 0)
+        run.out() << "Warning: " << inside
+                  << " contact node(s) start inside a rigid body (up to "
+                  << depth
+                  << " m); the first step pushes them out at once, which may "
+                     "need cut-backs. Fix: start the rigid bodies outside the "
+                     "tissue."
+                  << std::endl;
+    }
+    // Implicit dynamics starts from its initial conditions (u = v = 0),
+    // which need not be in equilibrium (e.g. a body let go under
+    // gravity); a quasi-static run starts in equilibrium.
+    std::string report;
+    if (!dynamic && !solve_step(run, 0.0, report))
+      throw SolverFailure("The initial state (t = 0) is not in equilibrium "
+                          "and Newton failed on it: " +
+                          report +
+                          ". Fix: make the loads and prescribed "
+                          "displacements zero at t = 0.");
+    if (dynamic)
+      evaluate_initial_state(run);
+    record_step(run, 0.0, 0);
+    run.write_fields(0.0);
+  }
+
+  template <int dim>
+  double ImplicitStepper<dim>::take_step(const SimulationAccess<dim> &run,
+                                         const TimePhase             &phase,
+                                         const Vector                &u_start,
+                                         double                      &dt,
+                                         unsigned int &cut_backs)
+  {
+    const double t_old = run.state().time;
+    std::string  report;
+    for (;;)
+    {
+      double t_new = std::min(t_old + dt, phase.end);
+      if (phase.end - t_new < 1e-9 * dt)
+        t_new = phase.end;
+      set_inertia(run, u_start, t_new - t_old);
+      if (solve_step(run, t_new, report))
+        return t_new;
+      run.solid().solution() = u_start;
+      run.solid().update_ghosts();
+      ++cut_backs;
+      if (cut_backs > run.parameters().time.max_cut_backs ||
+          dt / 2 < phase.minimum)
+        fail(run, report, phase, dt, cut_backs);
+      dt /= 2;
+      run.out() << report << "\n  -> cutting back to dt = " << dt << " s"
+                << std::endl;
+    }
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::fail(const SimulationAccess<dim> &run,
+                                  const std::string           &report,
+                                  const TimePhase             &phase,
+                                  const double                 dt,
+                                  const unsigned int           cut_backs)
+  {
+    const RunState &state = run.state();
+    run.boundary_conditions().set_time(state.time);
+    run.write_fields(state.time);
+    write_state(run);
+    std::ostringstream message;
+    message << report << "\nThe step was cut back " << cut_backs - 1
+            << " time(s) down to dt = " << dt << " s without success";
+    if (cut_backs <= run.parameters().time.max_cut_backs)
+      message << " (another cut-back would go below 'Time/Minimum "
+                 "time step' = "
+              << phase.minimum << " s; a smaller one allows more)";
+    message << ". The last converged state (step " << state.step
+            << ", t = " << state.time << " s) was written to '"
+            << run.parameters().output.directory
+            << "' (VTU and checkpoint). Fix: reduce 'Time/Time step', "
+               "check the loads and boundary conditions, or use the "
+               "'mixed u-p-J' formulation for nearly incompressible "
+               "materials.";
+    if (mortar && !dynamic && run.contact_parameters().friction_coefficient > 0)
+      message << " With friction, a step that fails at every size "
+                 "while contact nodes flip between stick and slip is "
+                 "a frictional snap: the quasi-static path has no "
+                 "continuation there (doc/contact.md). Fix: 'Time/"
+                 "Integrator = implicit dynamic', whose inertia "
+                 "carries the snap.";
+    throw SolverFailure(message.str());
+  }
+
+  template <int dim>
+  bool ImplicitStepper<dim>::finish_step(const SimulationAccess<dim> &run,
+                                         const double                 dt)
+  {
+    const auto     &parameters = run.parameters();
+    const RunState &state      = run.state();
+    const bool      stopped    = run.stop_requested();
+    const bool      last =
+        stopped || state.time >= parameters.time.end_time * (1 - 1e-12);
+    const unsigned int vtu = parameters.output.vtu_interval;
+    if ((vtu > 0 && state.step % vtu == 0) || last)
+      run.write_fields(state.time);
+    const unsigned int every = parameters.checkpoint.interval;
+    // A run stopped by its criterion can be continued (or branched from).
+    if ((every > 0 && state.step % every == 0) || stopped)
+      write_state(run);
+    const auto &progress = run.progress();
+    run.out() << "Step " << std::setw(4) << state.step
+              << "  t = " << std::setw(10) << state.time << " s ("
+              << std::setw(3)
+              << std::lround(100 * state.time / parameters.time.end_time)
+              << "%)  dt = " << dt << " s  Newton " << last_newton_iterations
+              << "  linear " << last_linear_iterations << "  |r| "
+              << std::scientific << std::setprecision(2) << last_residual
+              << std::defaultfloat << std::setprecision(6) << "  wall "
+              << ProgressReporter::format_duration(progress.elapsed())
+              << "  ETA "
+              << ProgressReporter::format_duration(progress.eta(state.time))
+              << std::endl;
+    return stopped;
+  }
+
+  template <int dim>
+  bool ImplicitStepper<dim>::solve_step(const SimulationAccess<dim> &run,
+                                        const double                 time,
+                                        std::string                 &report)
+  {
+    run.boundary_conditions().set_time(time);
+    if (mortar)
+      mortar->set_time(time);
+    const auto result      = newton->solve(run.solid());
+    last_newton_iterations = result.iterations;
+    last_linear_iterations = result.linear_iterations;
+    last_residual = result.residuals.empty() ? 0 : result.residuals.back();
+    if (result.converged)
+      return true;
+    std::ostringstream message;
+    message << "Step " << run.state().step + 1 << " (t = " << time
+            << " s, from t = " << run.state().time
+            << " s) failed: " << result.failure << ". Residual history (N):";
+    for (const double r : result.residuals)
+      message << " " << std::scientific << std::setprecision(3) << r;
+    report = message.str();
+    return false;
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::record_step(const SimulationAccess<dim> &run,
+                                         const double                 time,
+                                         const unsigned int cut_backs)
+  {
+    const bool    first   = run.state().step == 0;
+    HistoryValues leading = {
+        {"step_size", first ? 0.0 : time - previous_time},
+        {"newton_iterations", double(first ? 0 : last_newton_iterations)},
+        {"linear_iterations", double(first ? 0 : last_linear_iterations)},
+        {"cut_backs", double(cut_backs)},
+        {"wall_time", run.progress().elapsed()}};
+    if (dynamic)
+      leading.emplace_back("kinetic_energy", kinetic_energy(run));
+    previous_time = time;
+    HistoryValues trailing;
+    if (mortar)
+      trailing = {{"contact_active_nodes", double(mortar->n_active())},
+                  {"contact_slip_nodes", double(mortar->n_slip())},
+                  {"active_set_changes", double(mortar->changes_in_step())}};
+    run.record(time, leading, trailing);
+    if (mortar)
+      mortar->accept_step(run.solid(), time);
+  }
+
+  template <int dim>
+  void
+  ImplicitStepper<dim>::evaluate_initial_state(const SimulationAccess<dim> &run)
+  {
+    run.boundary_conditions().set_time(0.0);
+    if (mortar)
+      mortar->set_time(0.0);
+    const double violation = run.solid().update_constraints();
+    if (violation > 0)
+      throw SolverFailure(
+          "Implicit dynamics starts from u = 0, but the prescribed "
+          "displacements at t = 0 differ from zero (by up to " +
+          std::to_string(violation) +
+          " m). Fix: make them zero at t = 0 and ramp them up.");
+    const auto state = run.solid().assemble(false);
+    if (!state.ok || !std::isfinite(state.residual_norm))
+      throw SolverFailure("The initial state (t = 0) cannot be evaluated: " +
+                          state.failed_cell);
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::write_state(const SimulationAccess<dim> &run)
+  {
+    if (!dynamic)
+    {
+      run.write_checkpoint();
+      return;
+    }
+    const auto &solid = run.solid();
+    Vector      ghosted(solid.locally_owned_dofs(),
+                   solid.locally_relevant_dofs(),
+                   run.communicator());
+    ghosted = velocity;
+    run.write_checkpoint({&ghosted});
+  }
+
+  template <int dim>
+  QuasiStaticStepper<dim>::QuasiStaticStepper()
+      : ImplicitStepper<dim>(false)
+  {
+  }
+
+  template <int dim>
+  ImplicitDynamicStepper<dim>::ImplicitDynamicStepper()
+      : ImplicitStepper<dim>(true)
+  {
+  }
+
+  template class ImplicitStepper<2>;
+  template class ImplicitStepper<3>;
+  template class QuasiStaticStepper<2>;
+  template class QuasiStaticStepper<3>;
+  template class ImplicitDynamicStepper<2>;
+  template class ImplicitDynamicStepper<3>;
+} // namespace softgrasp
+
+SOFTGRASP_REGISTER_TIME_STEPPER(
+    softgrasp::QuasiStaticStepper,
+    quasi_static,
+    "quasi-static",
+    "static equilibrium at every load step by Newton's method (inertia "
+    "neglected; the 'Newton' and 'Linear solver' subsections apply)")
+
+SOFTGRASP_REGISTER_TIME_STEPPER(
+    softgrasp::ImplicitDynamicStepper,
+    implicit_dynamic,
+    "implicit dynamic",
+    "the same Newton solver with the inertia of the lumped mass, backward "
+    "Euler in time (first order, damps the fast motion of a snap, so that a "
+    "slow load follows the static path where one exists and passes through "
+    "a snap where none does; t is physical time and the history reports the "
+    "kinetic energy)")
