@@ -112,7 +112,7 @@ main(int argc, char **argv)
       softgrasp::ParameterReader reader;
       softgrasp::Simulation<3>::add_passes(reader);
       reader.read_string(handler, prm(n, degree, steps, kernel), "benchmark");
-      auto solver = softgrasp::Simulation<3>::create(comm, handler);
+      auto            solver = softgrasp::Simulation<3>::create(comm, handler);
       std::streambuf *silenced = std::cout.rdbuf(nullptr);
       solver->run();
       std::cout.rdbuf(silenced);

@@ -17,9 +17,9 @@
 #include <iomanip>
 #include <iostream>
 #include <softgrasp/base/parameter_reader.h>
-#include <softgrasp/solvers/simulation.h>
 #include <softgrasp/mechanics/solid_system.h>
 #include <softgrasp/meshes/mesh_factory.h>
+#include <softgrasp/solvers/simulation.h>
 #include <sstream>
 
 using namespace dealii;

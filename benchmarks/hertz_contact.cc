@@ -59,8 +59,7 @@ main(int argc, char **argv)
           "preconditioner = " +
           block + "\n set Reuse AMG = " + reuse_amg + "\nend\n",
       "benchmark");
-  softgrasp::Simulation<3> solver(
-      comm, softgrasp::SolverInputs<3>::parse(prm));
+  softgrasp::Simulation<3> solver(comm, softgrasp::SolverInputs<3>::parse(prm));
   solver.run();
 
   const auto   exact  = softgrasp_tests::hertz_solution(nu, depth);

@@ -35,6 +35,47 @@ namespace softgrasp_tests
   }
 
   /**
+   * A neo-Hookean cube of edge @p L (m; mu = 10 kPa, nu = 0.45, density
+   * 1000 kg/m^3, mixed u-p-J on 2 x 2 x 2 cells) on the symmetry planes x,
+   * y, z = 0 (boundary ids 0, 2, 4), stretched along x by the face x = L
+   * (id 1) moving by @p displacement (m, an expression in t); @p time: the
+   * entries of subsection Time; direct solves to 1e-12; output into
+   * @p directory, no VTU.
+   */
+  inline std::string stretched_cube_prm(const double       L,
+                                        const std::string &displacement,
+                                        const std::string &time,
+                                        const std::string &directory)
+  {
+    std::ostringstream prm;
+    prm << "subsection Mesh\n set Type = block\n"
+        << " subsection Block\n  set Upper corner = " << L << ", " << L << ", "
+        << L << "\n  set Subdivisions = 2, 2, 2\n end\nend\n"
+        << "subsection Finite element\n set Formulation = mixed u-p-J\nend\n"
+        << "subsection Materials\n set Material ids = 0\n"
+        << " subsection Material 0\n  set Model = neo-Hookean\n"
+        << "  set Density = 1000\n"
+        << "  subsection neo-Hookean\n   set Shear modulus = 1e4\n  end\n"
+        << "  subsection Volumetric\n   set Poisson's ratio = 0.45\n  end\n"
+        << " end\nend\n"
+        << "subsection Boundary conditions\n"
+        << " set Dirichlet boundary ids = 0, 1, 2, 4\n"
+        << " subsection Dirichlet boundary 0\n  set Components = x\n end\n"
+        << " subsection Dirichlet boundary 1\n  set Components = x\n"
+        << "  set Displacement = " << displacement << "; 0; 0\n end\n"
+        << " subsection Dirichlet boundary 2\n  set Components = y\n end\n"
+        << " subsection Dirichlet boundary 4\n  set Components = z\n end\n"
+        << "end\n"
+        << "subsection Time\n"
+        << time << "end\n"
+        << "subsection Newton\n set Relative tolerance = 1e-12\nend\n"
+        << "subsection Linear solver\n set Type = direct\nend\n"
+        << "subsection Output\n set Directory = " << directory
+        << "\n set VTU interval = 0\n set Verbose = false\nend\n";
+    return prm.str();
+  }
+
+  /**
    * Cook's membrane with a neo-Hookean material (mu = 422.5 kPa, Simo-Taylor
    * volumetric energy) and 1 N on the right edge; the corner (48, 60) mm is
    * monitor point 0. In 3D: 1 mm thick, one element layer, front and back

@@ -36,8 +36,8 @@
 template <int dim>
 void
 report_tip_displacement(const softgrasp::Simulation<dim> &solver,
-                        const double                           reference,
-                        const std::string                     &label)
+                        const double                      reference,
+                        const std::string                &label)
 {
   const auto  &history = solver.history();
   const double uy      = history.value(history.rows.size() - 1, "u0_y");

@@ -28,8 +28,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/solvers/solver_program.h>
 #include <softgrasp/solvers/simulation.h>
+#include <softgrasp/solvers/solver_program.h>
 
 int
 main(int argc, char **argv)
@@ -38,7 +38,7 @@ main(int argc, char **argv)
 
   softgrasp::SolverProgram program;
   program.default_parameter_file = "frictional_drag.prm";
-  program.report_2d = [](const softgrasp::Simulation<2> &solver)
+  program.report_2d              = [](const softgrasp::Simulation<2> &solver)
   { softgrasp::report_contact_forces(solver, "drag_forces", std::cout); };
   program.report_3d = [](const softgrasp::Simulation<3> &solver)
   { softgrasp::report_contact_forces(solver, "drag_forces", std::cout); };

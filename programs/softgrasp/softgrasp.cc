@@ -3,8 +3,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <softgrasp/solvers/solver_program.h>
 #include <softgrasp/solvers/simulation.h>
+#include <softgrasp/solvers/solver_program.h>
 
 int
 main(int argc, char **argv)

@@ -22,8 +22,7 @@ namespace
 {
   /// The level of "--level @p value": a number from 1 to @p levels, or an
   /// InputError with the fix.
-  unsigned int
-  level_number(const std::string &value, const unsigned int levels)
+  unsigned int level_number(const std::string &value, const unsigned int levels)
   {
     unsigned int level = 0;
     if (!value.empty() &&
@@ -31,22 +30,22 @@ namespace
         value.size() < 4)
       level = std::stoul(value);
     if (level < 1 || level > levels)
-      throw softgrasp::InputError(
-          "--level " + value + " is not a level of this sweep. Fix: give a "
-          "number from 1 to " + std::to_string(levels) +
-          " ('Grasp-and-pull sweep/Levels').");
+      throw softgrasp::InputError("--level " + value +
+                                  " is not a level of this sweep. Fix: give a "
+                                  "number from 1 to " +
+                                  std::to_string(levels) +
+                                  " ('Grasp-and-pull sweep/Levels').");
     return level;
   }
 
   /// The stages the command line asks for, on the sweep of the .prm.
   void run_stages(const softgrasp::ProgramArguments &arguments,
-                  softgrasp::GraspPullSweep          &sweep)
+                  softgrasp::GraspPullSweep         &sweep)
   {
     const unsigned int level =
-        arguments.has("--level")
-            ? level_number(arguments.options.at("--level"),
-                           sweep.parameters().rigid.levels)
-            : 0;
+        arguments.has("--level") ? level_number(arguments.options.at("--level"),
+                                                sweep.parameters().rigid.levels)
+                                 : 0;
     sweep.run_rigid(std::cout);
     if (arguments.has("--collect"))
       sweep.collect(std::cout);
@@ -67,9 +66,9 @@ main(int argc, char **argv)
 {
   using namespace softgrasp;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm comm = MPI_COMM_WORLD;
-  const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-  const auto     arguments = ProgramArguments::parse(
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const bool root      = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  const auto arguments = ProgramArguments::parse(
       argc,
       argv,
       "grasp_pull_sweep.prm",

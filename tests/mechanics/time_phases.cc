@@ -22,34 +22,12 @@ namespace
                           const std::string &phases,
                           const std::string &directory)
   {
-    std::ostringstream prm;
-    prm << "subsection Mesh\n set Type = block\n"
-        << " subsection Block\n  set Upper corner = " << L << ", " << L << ", "
-        << L << "\n  set Subdivisions = 2, 2, 2\n end\nend\n"
-        << "subsection Finite element\n set Formulation = mixed u-p-J\nend\n"
-        << "subsection Materials\n set Material ids = 0\n"
-        << " subsection Material 0\n  set Model = neo-Hookean\n"
-        << "  set Density = 1000\n"
-        << "  subsection neo-Hookean\n   set Shear modulus = 1e4\n  end\n"
-        << "  subsection Volumetric\n   set Poisson's ratio = 0.45\n  end\n"
-        << " end\nend\n"
-        << "subsection Boundary conditions\n"
-        << " set Dirichlet boundary ids = 0, 1, 2, 4\n"
-        << " subsection Dirichlet boundary 0\n  set Components = x\n end\n"
-        << " subsection Dirichlet boundary 1\n  set Components = x\n"
-        << "  set Displacement = " << 0.2 * L
-        << " * (1 - cos(pi * t)) / 2; 0; 0\n end\n"
-        << " subsection Dirichlet boundary 2\n  set Components = y\n end\n"
-        << " subsection Dirichlet boundary 4\n  set Components = z\n end\n"
-        << "end\n"
-        << "subsection Time\n set Integrator = " << integrator
-        << "\n set End time = 1\n set Phases = " << phases << "\nend\n"
-        << "subsection Explicit dynamics\n set Mass damping = 200\nend\n"
-        << "subsection Newton\n set Relative tolerance = 1e-12\nend\n"
-        << "subsection Linear solver\n set Type = direct\nend\n"
-        << "subsection Output\n set Directory = " << directory
-        << "\n set VTU interval = 0\n set Verbose = false\nend\n";
-    return prm.str();
+    std::ostringstream displacement, time;
+    displacement << 0.2 * L << " * (1 - cos(pi * t)) / 2";
+    time << " set Integrator = " << integrator
+         << "\n set End time = 1\n set Phases = " << phases << "\n";
+    return stretched_cube_prm(L, displacement.str(), time.str(), directory) +
+           "subsection Explicit dynamics\n set Mass damping = 200\nend\n";
   }
 
   /// Run and check the recorded times against @p expected; return the

@@ -8,9 +8,9 @@
 #include <memory>
 #include <softgrasp/grasp/arm_grasp_study.h>
 #include <softgrasp/grasp/indentation_study.h>
-#include <softgrasp/solvers/solver_program.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
 #include <softgrasp/mujoco/grasp_pull_sweep.h>
+#include <softgrasp/solvers/solver_program.h>
 #include <sstream>
 
 namespace softgrasp_tests

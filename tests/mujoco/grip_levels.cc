@@ -15,8 +15,8 @@
 #include "../tests.h"
 
 #include <filesystem>
-#include <softgrasp/solvers/solver_program.h>
 #include <softgrasp/mujoco/grasp_pull_sweep.h>
+#include <softgrasp/solvers/solver_program.h>
 
 using namespace softgrasp;
 

@@ -5,7 +5,9 @@
 #    resumed run ends equal to an uninterrupted one;
 #  - empty, truncated or missing checkpoint files (state, p4est mesh, data)
 #    stop with a message naming each file, never a signal;
-#  - a checkpoint of another dimension or without a manifest is refused.
+#  - a checkpoint of another dimension or without a manifest is refused;
+#  - a manifest edited to agree with the run does not get its data read:
+#    the data's element and fields are checked first (no signal).
 #   checkpoints.sh <block_compression> <its .prm> <work dir>
 set -euo pipefail
 exe=$1 prm=$2 work=$3
@@ -74,6 +76,24 @@ rm -rf run && cp -r pristine run
 sed -i 's/^dimension 3/dimension 2/' run/checkpoint/manifest.txt run/checkpoint.old/manifest.txt
 run_expect 1 dimension.log "$exe" resume.prm
 expect_message dimension.log "written by a 2D run, this run is 3D"
+
+# A manifest edited to agree with the run (or of another run): the data
+# are checked against the run's element and fields before they are read;
+# a clear stop, never a signal.
+rm -rf run && cp -r pristine run
+sed -i 's@^setting Finite element/Polynomial degree = 2@setting Finite element/Polynomial degree = 1@' \
+  run/checkpoint/manifest.txt run/checkpoint.old/manifest.txt
+run_expect 1 edited.log "$exe" degree.prm
+expect_clean_error edited.log
+expect_message edited.log "its data are of degree 2 elements (81 dofs per cell"
+expect_message edited.log "Its manifest does not describe its data"
+rm -rf run && cp -r pristine run
+sed -i 's@^setting Time/Integrator = quasi-static@setting Time/Integrator = explicit dynamic@' \
+  run/checkpoint/manifest.txt run/checkpoint.old/manifest.txt
+with_prm resume.prm explicit.prm Time "set Integrator = explicit dynamic"
+run_expect 1 integrator.log mpirun -np 2 "$exe" explicit.prm
+expect_clean_error integrator.log
+expect_message integrator.log "it holds 0 field(s) besides the displacement, this run needs 2"
 
 # No checkpoint at all.
 rm -rf run

@@ -64,32 +64,14 @@ namespace
 
   std::string stretch_prm(const std::string &integrator)
   {
-    std::ostringstream prm;
-    prm << "subsection Mesh\n set Type = block\n"
-        << " subsection Block\n  set Upper corner = " << L << ", " << L << ", "
-        << L << "\n  set Subdivisions = 2, 2, 2\n end\nend\n"
-        << "subsection Finite element\n set Formulation = mixed u-p-J\nend\n"
-        << "subsection Materials\n set Material ids = 0\n"
-        << " subsection Material 0\n  set Model = neo-Hookean\n"
-        << "  set Density = 1000\n"
-        << "  subsection neo-Hookean\n   set Shear modulus = 1e4\n  end\n"
-        << "  subsection Volumetric\n   set Poisson's ratio = 0.45\n  end\n"
-        << " end\nend\n"
-        << "subsection Boundary conditions\n"
-        << " set Dirichlet boundary ids = 0, 1, 2, 4\n"
-        << " subsection Dirichlet boundary 0\n  set Components = x\n end\n"
-        << " subsection Dirichlet boundary 1\n  set Components = x\n"
-        << "  set Displacement = " << 0.2 * L << " * t; 0; 0\n end\n"
-        << " subsection Dirichlet boundary 2\n  set Components = y\n end\n"
-        << " subsection Dirichlet boundary 4\n  set Components = z\n end\n"
-        << "end\n"
-        << "subsection Time\n set Integrator = " << integrator
-        << "\n set End time = 1\n set Time step = 0.25\nend\n"
-        << "subsection Newton\n set Relative tolerance = 1e-12\nend\n"
-        << "subsection Linear solver\n set Type = direct\nend\n"
-        << "subsection Output\n set Directory = out-" << integrator.substr(0, 4)
-        << "\n set VTU interval = 0\n set Verbose = false\nend\n";
-    return prm.str();
+    std::ostringstream displacement;
+    displacement << 0.2 * L << " * t";
+    return stretched_cube_prm(L,
+                              displacement.str(),
+                              " set Integrator = " + integrator +
+                                  "\n set End time = 1\n set Time step = "
+                                  "0.25\n",
+                              "out-" + integrator.substr(0, 4));
   }
 
   double final_force(softgrasp::Simulation<3> &simulation)
@@ -112,17 +94,16 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(8);
 
-  auto        one_step = make_solver<3>(stretch_prm("load in one step"));
-  const double force   = final_force(*one_step);
-  const auto  &rows    = one_step->history().rows;
+  auto         one_step = make_solver<3>(stretch_prm("load in one step"));
+  const double force    = final_force(*one_step);
+  const auto  &rows     = one_step->history().rows;
   SG_CHECK(rows.size() == 2, "two recorded states: t = 0 and the end");
-  dealii::deallog << "load in one step: " << rows.size()
-                  << " rows, columns:";
+  dealii::deallog << "load in one step: " << rows.size() << " rows, columns:";
   for (const auto &name : one_step->history().columns)
     dealii::deallog << ' ' << name;
   dealii::deallog << std::endl;
 
-  auto         stepped = make_solver<3>(stretch_prm("quasi-static"));
+  auto         stepped   = make_solver<3>(stretch_prm("quasi-static"));
   const double reference = final_force(*stepped);
   const auto   exact     = softgrasp::HomogeneousLoading::uniaxial(
       stepped->materials().get(0), {}, 1.2);

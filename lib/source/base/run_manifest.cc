@@ -44,8 +44,8 @@ namespace softgrasp
       {
         return !name.empty() && name != "." && name != ".." &&
                name.find('/') == std::string::npos &&
-               name.find('\0') == std::string::npos &&
-               name != manifest_name && name != RunDirectory::lock_name;
+               name.find('\0') == std::string::npos && name != manifest_name &&
+               name != RunDirectory::lock_name;
       }
 
       const char *const header =
@@ -78,11 +78,10 @@ namespace softgrasp
     std::vector<std::string> read(const std::string &directory)
     {
       std::vector<std::string> names;
-      std::ifstream            in(fs::path(directory) / manifest_name,
-                       std::ios::binary);
+      std::ifstream in(fs::path(directory) / manifest_name, std::ios::binary);
       if (!in)
         return names;
-      const std::string content((std::istreambuf_iterator<char>(in)),
+      const std::string     content((std::istreambuf_iterator<char>(in)),
                                 std::istreambuf_iterator<char>());
       std::set<std::string> seen;
       std::size_t           begin = 0;

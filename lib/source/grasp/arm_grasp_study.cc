@@ -17,7 +17,7 @@ namespace softgrasp
       : IndentationStudy(comm, prm)
   {
     scene.parse_parameters(prm);
-    const MeshGenerator<3> &mesh = solver_inputs.mesh.generator();
+    const MeshGenerator<3> &mesh = inputs().mesh.generator();
     if (const auto *limb = dynamic_cast<const LayeredLimb *>(&mesh))
     {
       geometry = limb->geometry;
@@ -72,8 +72,8 @@ namespace softgrasp
     }
   } // namespace
 
-  void ArmGraspStudy::postprocess(const Simulation<3> &solver,
-                                  const KinematicsData     &phases)
+  void ArmGraspStudy::postprocess(const Simulation<3>  &solver,
+                                  const KinematicsData &phases)
   {
     const auto        &records = solver.contact_force_history();
     const double       t_end   = records.empty() ? 0 : records.back().time;
@@ -81,7 +81,7 @@ namespace softgrasp
     // The limb's axis (world) and the link the slices go through.
     const KinematicsData::Body *object = nullptr;
     for (const auto &b : phases.bodies)
-      if (b.name == parameters.object_body)
+      if (b.name == study_parameters().object_body)
         object = &b;
     const Pose frame = LimbScene::limb_frame_in_body(skin.length);
     axis             = object->poses.front().orientation *
@@ -90,8 +90,8 @@ namespace softgrasp
     Eigen::Vector3d through = centre;
     for (unsigned int b = 0; b < bodies.bodies().size(); ++b)
       for (unsigned int g = 0; g < bodies.bodies()[b].geoms().size(); ++g)
-        if (bodies.geom_label(b, g) == parameters.target_link ||
-            (parameters.target_link.empty() && b == 0 && g == 0))
+        if (bodies.geom_label(b, g) == study_parameters().target_link ||
+            (study_parameters().target_link.empty() && b == 0 && g == 0))
           through = bodies.bodies()[b].geom_pose(g, t_end).position;
     const Eigen::Vector3d palm_normal =
         phases.bodies.front().poses.back().orientation *
@@ -117,12 +117,14 @@ namespace softgrasp
       v.e1                     = tensor(e2.cross(n));
       v.e2                     = tensor(e2);
       const Point<3> origin(point[0], point[1], point[2]);
-      v.section = Section::cut(solver.system(), origin, tensor(n), 0, comm);
+      v.section =
+          Section::cut(solver.system(), origin, tensor(n), 0, communicator());
       v.links_equilibrium =
           SectionView::geom_outlines(bodies, 0, origin, tensor(n), v.e1, v.e2);
       v.links_indented = SectionView::geom_outlines(
           bodies, t_end, origin, tensor(n), v.e1, v.e2);
-      if (parameters.pictures && Utilities::MPI::this_mpi_process(comm) == 0)
+      if (study_parameters().pictures &&
+          Utilities::MPI::this_mpi_process(communicator()) == 0)
         write_section_pictures(v,
                                names,
                                solver.parameters().output.directory,
@@ -132,13 +134,14 @@ namespace softgrasp
     };
     views.clear();
     view("vertical",
-         "vertical slice across the arm through " + parameters.target_link,
+         "vertical slice across the arm through " +
+             study_parameters().target_link,
          through,
          axis,
          palm_normal);
     view("horizontal",
          "slice parallel to the palm through the arm's axis at " +
-             parameters.target_link,
+             study_parameters().target_link,
          on_axis,
          palm_normal,
          -axis.cross(palm_normal));

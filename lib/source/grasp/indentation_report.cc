@@ -9,8 +9,8 @@ namespace softgrasp
 {
   using namespace dealii;
 
-  void IndentationStudy::summarise(const Simulation<3> &solver,
-                                   const KinematicsData     &cut)
+  void IndentationStudy::summarise(const Simulation<3>  &solver,
+                                   const KinematicsData &cut)
   {
     const auto  &records  = solver.contact_force_history();
     const double t_end    = records.empty() ? 0 : records.back().time;
@@ -51,8 +51,8 @@ namespace softgrasp
     return check;
   }
 
-  void IndentationStudy::write_link_table(const Simulation<3> &solver,
-                                          const KinematicsData     &cut)
+  void IndentationStudy::write_link_table(const Simulation<3>  &solver,
+                                          const KinematicsData &cut)
   {
     const double duration = cut.time.back() - cut.time.front();
     // Links: those that touch in either model.

@@ -6,8 +6,8 @@
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/grasp/grasp_pictures.h>
 #include <softgrasp/grasp/indentation_study.h>
-#include <softgrasp/solvers/simulation.h>
 #include <softgrasp/rigid/rigid_body_set.h>
+#include <softgrasp/solvers/simulation.h>
 #include <sstream>
 
 namespace softgrasp

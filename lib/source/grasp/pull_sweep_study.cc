@@ -8,8 +8,8 @@
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/grasp/pull_sweep_study.h>
 #include <softgrasp/io/hdf5_record.h>
-#include <softgrasp/solvers/simulation.h>
 #include <softgrasp/rigid/pose_trajectory.h>
+#include <softgrasp/solvers/simulation.h>
 #include <sstream>
 
 namespace softgrasp
@@ -164,8 +164,9 @@ namespace softgrasp
   }
 
   PullSweepStudy::PullSweepStudy(MPI_Comm comm, ParameterHandler &prm)
-      : ArmGraspStudy(comm, prm)
-      , output(solver_inputs.solver.output.directory)
+      : comm(comm)
+      , arm_study(comm, prm)
+      , output(arm_study.inputs().solver.output.directory)
   {
     for (const auto &[name, value] : ParameterReader::flatten(prm))
       if (name.rfind("Output/", 0) != 0)
@@ -246,7 +247,7 @@ namespace softgrasp
       return levels;
     const auto     &phase  = kinematics.phase("indentation");
     const auto      cut    = kinematics.slice(phase.start_time, phase.end_time);
-    SolverInputs<3> inputs = inputs_for(cut);
+    SolverInputs<3> inputs = arm_study.inputs_for(cut);
     inputs.solver.time.end_time    = phase.end_time - phase.start_time;
     inputs.solver.output.directory = output + "/fe_closing";
     inputs.add_resume_setting("Study/Sweep", "grasp-and-pull");
@@ -256,8 +257,8 @@ namespace softgrasp
       inputs.solver.time.minimum_step =
           std::min(step, inputs.solver.time.minimum_step);
     }
-    const auto [b, g] =
-        link_index(inputs.bodies, grip_link, "Grasp-and-pull sweep/Grip link");
+    const auto [b, g] = IndentationStudy::link_index(
+        inputs.bodies, grip_link, "Grasp-and-pull sweep/Grip link");
 
     // A killed sweep goes on from the closing's latest checkpoint.
     bool started = false;
@@ -281,7 +282,7 @@ namespace softgrasp
       else
       {
         inputs.solver.checkpoint.resume = started;
-        auto solver = Simulation<3>::create(comm, inputs);
+        auto solver                     = Simulation<3>::create(comm, inputs);
         solver->set_stop_criterion(
             [&solver, b = b, g = g, target = forces[k]]()
             {
@@ -316,7 +317,7 @@ namespace softgrasp
     const auto motion =
         kinematics.slice(pull_phase.start_time, pull_phase.end_time);
     const KinematicsData path       = pull_from(closing, motion, level.time);
-    SolverInputs<3>      inputs     = inputs_for(path);
+    SolverInputs<3>      inputs     = arm_study.inputs_for(path);
     inputs.solver.output.directory  = level_directory(k);
     inputs.solver.checkpoint.resume = true;
     inputs.add_resume_setting("Study/Sweep", "grasp-and-pull");
@@ -332,7 +333,7 @@ namespace softgrasp
     {
       level.failure = e.what();
     }
-    const auto check  = final_state_check(*solver);
+    const auto check  = arm_study.final_state_check(*solver);
     level.balance     = check.balance;
     level.penetration = check.penetration;
     level.links       = link_force_histories(solver->rigid_bodies(),

@@ -86,6 +86,59 @@ namespace softgrasp
       }
       return m;
     }
+    /// The layout of @p n_fields fields of @p system on @p tria.
+    template <int dim>
+    CheckpointLayout
+    layout_of(const parallel::distributed::Triangulation<dim> &tria,
+              const SolidSystem<dim>                          &system,
+              const unsigned int                               n_fields)
+    {
+      CheckpointLayout layout;
+      layout.dim            = dim;
+      layout.n_coarse_cells = tria.n_cells(0);
+      layout.n_cells        = tria.n_global_active_cells();
+      layout.degree         = system.fe().degree;
+      layout.dofs_per_cell  = system.fe().n_dofs_per_cell();
+      layout.n_dofs         = system.n_dofs();
+      layout.n_fields       = n_fields;
+      return layout;
+    }
+
+    /// Why data of layout @p saved cannot be read into a run of layout
+    /// @p run; "" if they can. @p compare_cells: after the mesh was loaded.
+    std::string mismatch(const CheckpointLayout &saved,
+                         const CheckpointLayout &run,
+                         const bool              compare_cells)
+    {
+      std::ostringstream why;
+      if (saved.dim != run.dim)
+        why << "its data are of a " << saved.dim << "D run, this run is "
+            << run.dim << "D";
+      else if (saved.n_coarse_cells != run.n_coarse_cells)
+        why << "its mesh has " << saved.n_coarse_cells
+            << " coarse cells, this run's " << run.n_coarse_cells
+            << " (another 'Mesh')";
+      else if (compare_cells && saved.n_cells != run.n_cells)
+        why << "its state belongs to a mesh of " << saved.n_cells
+            << " cells, its mesh file has " << run.n_cells
+            << " (files of two checkpoints)";
+      else if (compare_cells && (saved.degree != run.degree ||
+                                 saved.dofs_per_cell != run.dofs_per_cell ||
+                                 saved.n_dofs != run.n_dofs))
+        why << "its data are of degree " << saved.degree << " elements ("
+            << saved.dofs_per_cell << " dofs per cell, " << saved.n_dofs
+            << " dofs), this run's of degree " << run.degree << " ("
+            << run.dofs_per_cell << " dofs per cell, " << run.n_dofs
+            << " dofs)";
+      else if (saved.n_fields != run.n_fields)
+        why << "it holds " << saved.n_fields - 1
+            << " field(s) besides the displacement, this run needs "
+            << run.n_fields - 1
+            << ": it was written by another time integrator (or, for the "
+               "explicit one, with 'Explicit dynamics/Stiffness damping' "
+               "switched on or off)";
+      return why.str();
+    }
   } // namespace
 
   template <int dim>
@@ -128,46 +181,17 @@ namespace softgrasp
       RunState                                                  state,
       const std::vector<const TrilinosWrappers::MPI::Vector *> &extra) const
   {
-    state.n_extra_fields       = extra.size();
-    const MPI_Comm    comm     = system.communicator();
-    const bool        root     = Utilities::MPI::this_mpi_process(comm) == 0;
-    const std::string target   = directory + "/checkpoint";
-    const std::string partial  = directory + "/checkpoint.new";
-    const std::string previous = directory + "/checkpoint.old";
+    state.n_extra_fields      = extra.size();
+    state.layout              = layout_of(tria, system, 1 + extra.size());
+    const MPI_Comm    comm    = system.communicator();
+    const bool        root    = Utilities::MPI::this_mpi_process(comm) == 0;
+    const std::string partial = directory + "/checkpoint.new";
     // p4est aborts the job on a failed write: check the free space first
     // (twice the last checkpoint, or an estimate from the fields).
-    std::string error;
-    if (root)
-    {
-      std::error_code ignored;
-      std::uintmax_t  needed = 0;
-      if (fs::is_directory(target))
-        for (const auto &entry : fs::directory_iterator(target))
-          needed += entry.file_size(ignored);
-      else
-        needed = (1 + extra.size()) * 12 * system.n_dofs() +
-                 200 * tria.n_global_active_cells();
-      const auto space = fs::space(directory, ignored);
-      if (!ignored && space.available < 2 * needed + (1u << 16))
-        error = "Not enough free disk space for a checkpoint in '" + directory +
-                "' (" + std::to_string(space.available >> 20) +
-                " MiB free, about " + std::to_string((2 * needed) >> 20) +
-                " MiB needed). The previous checkpoint is kept. Fix: free "
-                "disk space, or set 'Checkpoint/Interval = 0'.";
-      else
-        try
-        {
-          for (const auto &entry : {partial, target, previous})
-            RunManifest::note(entry);
-          fs::remove_all(partial, ignored);
-          if (!fs::create_directories(partial, ignored) && ignored)
-            error = "Cannot create '" + partial + "': " + ignored.message();
-        }
-        catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-    }
+    std::string error =
+        root ? prepare_folder((1 + extra.size()) * 12 * system.n_dofs() +
+                              200 * tria.n_global_active_cells())
+             : "";
     error = Utilities::MPI::broadcast(comm, error, 0);
     if (!error.empty())
       throw InputError(error);
@@ -184,37 +208,81 @@ namespace softgrasp
     MPI_Barrier(comm);
 
     if (root)
-    {
-      try
-      {
-        {
-          std::ofstream                 out(partial + "/state.txt");
-          boost::archive::text_oarchive archive(out);
-          archive << state;
-          out.flush();
-          if (!out)
-            throw InputError("Cannot write '" + partial + "/state.txt'.");
-        }
-        write_manifest(partial);
-        // Keep the last good checkpoint until the new one is in place.
-        if (fs::exists(target))
-        {
-          fs::remove_all(previous);
-          fs::rename(target, previous);
-        }
-        fs::rename(partial, target);
-      }
-      catch (const std::exception &e)
-      {
-        error = std::string("Writing the checkpoint in '") + directory +
-                "' failed: " + e.what() +
-                " The previous checkpoint is kept. Fix: check that the disk "
-                "is not full and the directory is writable.";
-      }
-    }
+      error = complete(state);
     error = Utilities::MPI::broadcast(comm, error, 0);
     if (!error.empty())
       throw InputError(error);
+  }
+
+  template <int dim>
+  std::string
+  Checkpoint<dim>::prepare_folder(const std::uintmax_t estimate) const
+  {
+    const std::string target   = directory + "/checkpoint";
+    const std::string partial  = directory + "/checkpoint.new";
+    const std::string previous = directory + "/checkpoint.old";
+    std::error_code   ignored;
+    std::uintmax_t    needed = 0;
+    if (fs::is_directory(target))
+      for (const auto &entry : fs::directory_iterator(target))
+        needed += entry.file_size(ignored);
+    else
+      needed = estimate;
+    const auto space = fs::space(directory, ignored);
+    if (!ignored && space.available < 2 * needed + (1u << 16))
+      return "Not enough free disk space for a checkpoint in '" + directory +
+             "' (" + std::to_string(space.available >> 20) +
+             " MiB free, about " + std::to_string((2 * needed) >> 20) +
+             " MiB needed). The previous checkpoint is kept. Fix: free "
+             "disk space, or set 'Checkpoint/Interval = 0'.";
+    try
+    {
+      for (const auto &entry : {partial, target, previous})
+        RunManifest::note(entry);
+      fs::remove_all(partial, ignored);
+      if (!fs::create_directories(partial, ignored) && ignored)
+        return "Cannot create '" + partial + "': " + ignored.message();
+    }
+    catch (const std::exception &e)
+    {
+      return e.what();
+    }
+    return "";
+  }
+
+  template <int dim>
+  std::string Checkpoint<dim>::complete(const RunState &state) const
+  {
+    const std::string target   = directory + "/checkpoint";
+    const std::string partial  = directory + "/checkpoint.new";
+    const std::string previous = directory + "/checkpoint.old";
+    try
+    {
+      {
+        std::ofstream                 out(partial + "/state.txt");
+        boost::archive::text_oarchive archive(out);
+        archive << state;
+        out.flush();
+        if (!out)
+          throw InputError("Cannot write '" + partial + "/state.txt'.");
+      }
+      write_manifest(partial);
+      // Keep the last good checkpoint until the new one is in place.
+      if (fs::exists(target))
+      {
+        fs::remove_all(previous);
+        fs::rename(target, previous);
+      }
+      fs::rename(partial, target);
+    }
+    catch (const std::exception &e)
+    {
+      return std::string("Writing the checkpoint in '") + directory +
+             "' failed: " + e.what() +
+             " The previous checkpoint is kept. Fix: check that the disk "
+             "is not full and the directory is writable.";
+    }
+    return "";
   }
 
   template <int dim>
@@ -345,6 +413,7 @@ namespace softgrasp
   Checkpoint<dim>::load(parallel::distributed::Triangulation<dim>  &tria,
                         SolidSystem<dim>                           &system,
                         std::vector<TrilinosWrappers::MPI::Vector> &extra,
+                        const unsigned int                          n_extra,
                         std::ostream                               &log) const
   {
     const std::string source = select(system.communicator(), log);
@@ -363,6 +432,30 @@ namespace softgrasp
                        "Boost version. Fix: resume with that build, or set "
                        "'Checkpoint/Resume = false'.");
     }
+    // The data against the run, before p4est or the solution transfer
+    // read them (an edited or foreign manifest must not reach them).
+    const auto refuse = [&](const std::string &why)
+    {
+      throw InputError("The run cannot resume from the checkpoint in '" +
+                       source + "': " + why +
+                       ". Its manifest does not describe its data (edited, "
+                       "or of another run). Fix: resume with the settings "
+                       "of the run that wrote the data, or set "
+                       "'Checkpoint/Resume = false'.");
+    };
+    const bool       recorded = state.layout.dim > 0; // not before format 4.1
+    CheckpointLayout run;
+    run.dim                = dim;
+    run.n_coarse_cells     = tria.n_cells(0);
+    run.n_fields           = 1 + n_extra;
+    CheckpointLayout saved = state.layout;
+    if (!recorded) // only the field count is known
+    {
+      saved          = run;
+      saved.n_fields = 1 + state.n_extra_fields;
+    }
+    if (const auto why = mismatch(saved, run, false); !why.empty())
+      refuse(why);
     try
     {
       tria.load(source + "/mesh");
@@ -375,6 +468,11 @@ namespace softgrasp
                        "as the run that wrote it.");
     }
     system.setup();
+    if (recorded)
+      if (const auto why = mismatch(
+              state.layout, layout_of(tria, system, 1 + n_extra), true);
+          !why.empty())
+        refuse(why);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
         transfer(system.dof_handler());
     extra.resize(state.n_extra_fields);

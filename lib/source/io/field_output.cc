@@ -103,6 +103,15 @@ namespace softgrasp
         system.mapping(), degree, DataOut<dim>::curved_inner_cells);
     data_out.deform(0);
 
+    write_files(data_out, comm, time, index);
+  }
+
+  template <int dim>
+  void FieldOutput<dim>::write_files(const DataOut<dim> &data_out,
+                                     const MPI_Comm      comm,
+                                     const double        time,
+                                     const unsigned int  index)
+  {
     std::ostringstream name;
     name << base_name << "_" << std::setw(5) << std::setfill('0') << index
          << ".vtu";

@@ -4,8 +4,8 @@
 #include <fstream>
 #include <hdf5.h>
 #include <softgrasp/base/atomic_file.h>
-#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/io/kinematics_file.h>
 #include <tuple>
 

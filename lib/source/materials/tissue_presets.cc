@@ -4,7 +4,7 @@
 namespace softgrasp
 {
   // Parameter values and their sources are tabulated in doc/materials.md;
-  // keep the two in step.
+  // keep the two in step. Longer than 80 lines on purpose: one table.
   const std::vector<TissuePresets::Preset> &TissuePresets::all()
   {
     static const std::vector<Preset> presets = {

@@ -320,6 +320,8 @@ namespace softgrasp
     prm.leave_subsection();
   }
 
+  // Longer than 80 lines on purpose: one declare_entry after another, in
+  // the order of the .prm and its documentation, reads as a table.
   void LinearSolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
@@ -540,8 +542,8 @@ namespace softgrasp
   void OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory    = prm.get("Directory");
-    base_name    = prm.get("Base name");
+    directory = prm.get("Directory");
+    base_name = prm.get("Base name");
     if (base_name.empty() || base_name.find('/') != std::string::npos)
       throw InputError("Parameter 'Output/Base name' is '" + base_name +
                        "': it must be a non-empty file name prefix without "
@@ -736,8 +738,9 @@ namespace softgrasp
     prm.leave_subsection();
   }
 
-  void SolverParameters::declare_parameters(ParameterHandler        &prm,
-                                            const IntegratorChoices &integrators)
+  void
+  SolverParameters::declare_parameters(ParameterHandler        &prm,
+                                       const IntegratorChoices &integrators)
   {
     DiscretizationParameters::declare_parameters(prm);
     TimeParameters::declare_parameters(prm, integrators);

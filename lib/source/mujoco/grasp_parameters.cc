@@ -7,6 +7,8 @@ namespace softgrasp
 {
   using namespace dealii;
 
+  // Longer than 80 lines on purpose: one declare_entry after another, in
+  // the order of the .prm and its documentation, reads as a table.
   void GraspParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Rigid environment");

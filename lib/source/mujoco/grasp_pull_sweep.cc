@@ -18,6 +18,8 @@ namespace softgrasp
 {
   using namespace dealii;
 
+  // Longer than 80 lines on purpose: one declare_entry after another, in
+  // the order of the .prm and its documentation, reads as a table.
   void SweepParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Grasp-and-pull sweep");
@@ -166,7 +168,6 @@ namespace softgrasp
     }
   } // namespace
 
-
   GraspPullSweep::GraspPullSweep(MPI_Comm           comm,
                                  ParameterHandler  &prm,
                                  const std::string &prm_file,
@@ -205,7 +206,7 @@ namespace softgrasp
                            "writable place.");
         const std::string file = directory + "/sweep_rigid.h5";
         if (std::filesystem::exists(file) &&
-            std::filesystem::exists(study.kinematics_file(directory)))
+            std::filesystem::exists(study.arm().kinematics_file(directory)))
           record = read_rigid_record(file);
         if (record.settings == settings)
           log << "Rigid stage: the results in " << file
@@ -214,11 +215,11 @@ namespace softgrasp
         {
           GraspParameters parameters = grasp;
           parameters.scene_file =
-              study.rigid_scene(parameters.scene_file, directory);
+              study.arm().rigid_scene(parameters.scene_file, directory);
           const auto      start = std::chrono::steady_clock::now();
           GraspSimulation simulation(parameters, log);
           const auto      data = simulation.run();
-          write_kinematics_file(data, study.kinematics_file(directory));
+          write_kinematics_file(data, study.arm().kinematics_file(directory));
           rigid = simulation.grip_levels(sweep.rigid);
           log << "Rigid stage (MuJoCo): "
               << std::chrono::duration<double>(
@@ -254,7 +255,7 @@ namespace softgrasp
   {
     const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     const auto kinematics =
-        read_kinematics_file(study.kinematics_file(directory));
+        read_kinematics_file(study.arm().kinematics_file(directory));
     std::vector<double> forces = record.targets;
     if (up_to > 0 && up_to < forces.size())
       forces.resize(up_to);
@@ -316,7 +317,7 @@ namespace softgrasp
       log << "Level " << k << ": " << level.reached_force
           << " N at t = " << level.time << " s of the closure; pulling\n";
     const auto start = std::chrono::steady_clock::now();
-    study.pull(read_kinematics_file(study.kinematics_file(directory)),
+    study.pull(read_kinematics_file(study.arm().kinematics_file(directory)),
                k,
                level,
                sweep.pull_friction);

@@ -6,9 +6,9 @@
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/program_arguments.h>
 #include <softgrasp/grasp/indentation_study.h>
-#include <softgrasp/solvers/solver_program.h>
 #include <softgrasp/mujoco/grasp_simulation.h>
 #include <softgrasp/mujoco/grasp_study_program.h>
+#include <softgrasp/solvers/solver_program.h>
 
 namespace softgrasp
 {

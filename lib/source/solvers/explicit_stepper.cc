@@ -96,10 +96,7 @@ namespace softgrasp
         fixed.add_index(i);
     fixed.compress();
     integrator = std::make_unique<CentralDifference<dim>>(
-        *force,
-        mass,
-        fixed,
-        sim->parameters().explicit_dynamics.mass_damping);
+        *force, mass, fixed, sim->parameters().explicit_dynamics.mass_damping);
     // The balance limit acts after the first 2 % of the run.
     integrator->set_balance_limit(
         sim->parameters().explicit_dynamics.energy_balance_limit,
@@ -161,8 +158,8 @@ namespace softgrasp
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
       {
-        const double c = sim->materials().get(cell->material_id())
-                             .reference_wave_speed();
+        const double c =
+            sim->materials().get(cell->material_id()).reference_wave_speed();
         estimate[cell->active_cell_index()] =
             cell->minimum_vertex_distance() / c;
         smallest = std::min(smallest, estimate[cell->active_cell_index()]);
@@ -288,7 +285,7 @@ namespace softgrasp
     }
     sim->state().integrator_state = integrator->state_scalars();
     sim->state().integrator_state.insert(sim->state().integrator_state.end(),
-                                        {double(steps), time_step});
+                                         {double(steps), time_step});
     std::vector<const TrilinosWrappers::MPI::Vector *> written;
     for (unsigned int k = 0; k < n_checkpoint_fields(sim->parameters()); ++k)
       written.push_back(&fields[k]);
@@ -307,7 +304,7 @@ namespace softgrasp
 
   template <int dim>
   void ExplicitStepper<dim>::fail(const std::string &cause,
-                                 const std::string &fix)
+                                  const std::string &fix)
   {
     const double t = integrator->time();
     write_last_good_state(t);
@@ -322,24 +319,24 @@ namespace softgrasp
 
   template <int dim>
   void ExplicitStepper<dim>::print_progress(const double time,
-                                           const double dt) const
+                                            const double dt) const
   {
     const auto   e   = integrator->energies();
     const double end = sim->parameters().time.end_time;
     sim->out() << "Record " << std::setw(4) << sim->state().step
-                << "  t = " << std::setw(10) << time << " s (" << std::setw(3)
-                << std::lround(100 * time / end) << "%)  steps " << steps
-                << "  dt = " << std::setprecision(3) << dt
-                << " s  E_kin = " << e.kinetic << " J  balance "
-                << 100 * e.balance_error << "%";
+               << "  t = " << std::setw(10) << time << " s (" << std::setw(3)
+               << std::lround(100 * time / end) << "%)  steps " << steps
+               << "  dt = " << std::setprecision(3) << dt
+               << " s  E_kin = " << e.kinetic << " J  balance "
+               << 100 * e.balance_error << "%";
     if (explicit_contact)
       sim->out() << "  contact " << explicit_contact->n_active() << " ("
-                  << explicit_contact->n_slip() << " slip)";
+                 << explicit_contact->n_slip() << " slip)";
     sim->out() << std::setprecision(6) << "  wall "
-                << ProgressReporter::format_duration(sim->progress().elapsed())
-                << "  ETA "
-                << ProgressReporter::format_duration(sim->progress().eta(time))
-                << std::endl;
+               << ProgressReporter::format_duration(sim->progress().elapsed())
+               << "  ETA "
+               << ProgressReporter::format_duration(sim->progress().eta(time))
+               << std::endl;
   }
 
   template <int dim>

@@ -33,12 +33,13 @@ namespace softgrasp
   template <int dim>
   std::unique_ptr<ContactSurface<dim>>
   ImplicitStepper<dim>::make_contact(const SimulationAccess<dim> &run,
-                                     const double shear_modulus)
+                                     const double                 shear_modulus)
   {
-    auto contact = std::make_unique<MortarContact<dim>>(run.contact_parameters(),
-                                                        run.rigid_bodies(),
-                                                        shear_modulus,
-                                                        run.timers());
+    auto contact =
+        std::make_unique<MortarContact<dim>>(run.contact_parameters(),
+                                             run.rigid_bodies(),
+                                             shear_modulus,
+                                             run.timers());
     contact->setup(run.solid());
     run.solid().set_nodal_conditions(contact.get());
     mortar = contact.get();
@@ -99,13 +100,13 @@ namespace softgrasp
       const TimePhase phase       = time.phase_at(state.time);
       unsigned int    cut_backs   = 0;
       const Vector    u_converged = run.solid().solution();
-      dt = std::min(dt, phase.step);
+      dt                          = std::min(dt, phase.step);
       const double t_new = take_step(run, phase, u_converged, dt, cut_backs);
       update_velocity(run, u_converged, t_new - state.time);
       state.time = t_new;
       ++state.step;
       record_step(run, t_new, cut_backs);
-      const bool stop = finish_step(run, dt);
+      const bool      stop = finish_step(run, dt);
       const TimePhase next = time.phase_at(state.time);
       if (next.end != phase.end)
         dt = next.step; // a new phase starts with its own step
@@ -187,7 +188,7 @@ namespace softgrasp
                                          const TimePhase             &phase,
                                          const Vector                &u_start,
                                          double                      &dt,
-                                         unsigned int &cut_backs)
+                                         unsigned int                &cut_backs)
   {
     const double t_old = run.state().time;
     std::string  report;
@@ -305,7 +306,7 @@ namespace softgrasp
   template <int dim>
   void ImplicitStepper<dim>::record_step(const SimulationAccess<dim> &run,
                                          const double                 time,
-                                         const unsigned int cut_backs)
+                                         const unsigned int           cut_backs)
   {
     const bool    first   = run.state().step == 0;
     HistoryValues leading = {
@@ -394,8 +395,8 @@ SOFTGRASP_REGISTER_TIME_STEPPER(
     softgrasp::ImplicitDynamicStepper,
     implicit_dynamic,
     "implicit dynamic",
-    "the same Newton solver with the inertia of the lumped mass, backward "
-    "Euler in time (first order, damps the fast motion of a snap, so that a "
-    "slow load follows the static path where one exists and passes through "
-    "a snap where none does; t is physical time and the history reports the "
-    "kinetic energy)")
+    "Newton's method as 'quasi-static', with the inertia of the lumped mass, "
+    "backward Euler in time (first order, damps the fast motion of a snap, "
+    "so that a slow load follows the static path where one exists and passes "
+    "through a snap where none does; t is physical time and the history "
+    "reports the kinetic energy)")

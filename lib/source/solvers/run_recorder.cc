@@ -152,9 +152,10 @@ namespace softgrasp
       parallel::distributed::Triangulation<dim>  &tria,
       SolidSystem<dim>                           &system,
       std::vector<TrilinosWrappers::MPI::Vector> &fields,
+      const unsigned int                          n_fields,
       std::ostream                               &log)
   {
-    RunState state        = checkpoint.load(tria, system, fields, log);
+    RunState state = checkpoint.load(tria, system, fields, n_fields, log);
     history_table.columns = state.history_columns;
     history_table.rows    = state.history_rows;
     contact_table.columns = state.contact_columns;
@@ -167,8 +168,7 @@ namespace softgrasp
     return state;
   }
 
-  template <int dim>
-  const HistoryWriter &RunRecorder<dim>::history() const
+  template <int dim> const HistoryWriter &RunRecorder<dim>::history() const
   {
     return history_table;
   }

@@ -118,18 +118,11 @@ namespace softgrasp
       if (resume)
       {
         state = recorder.load_checkpoint(
-            triangulation, *solid, restored_fields, std::cout);
-        if (restored_fields.size() !=
-            stepper->n_checkpoint_fields(solver_parameters))
-          throw InputError(
-              "The checkpoint in '" + solver_parameters.output.directory +
-              "' holds " + std::to_string(restored_fields.size()) +
-              " field(s) besides the displacement, this solver needs " +
-              std::to_string(stepper->n_checkpoint_fields(solver_parameters)) +
-              ": it was written by the other time integrator (or, for the "
-              "explicit one, with 'Explicit dynamics/Stiffness damping' "
-              "switched on or off). Fix: resume with the 'Time/Integrator' "
-              "and the stiffness damping of the run that wrote it.");
+            triangulation,
+            *solid,
+            restored_fields,
+            stepper->n_checkpoint_fields(solver_parameters),
+            std::cout);
       }
       else
       {
@@ -181,8 +174,8 @@ namespace softgrasp
     row.insert(row.end(), leading.begin(), leading.end());
     for (const auto &[id, force] : solid->reactions())
       for (unsigned int d = 0; d < dim; ++d)
-        row.emplace_back(
-            "reaction_" + std::to_string(id) + "_" + axes[d], force[d]);
+        row.emplace_back("reaction_" + std::to_string(id) + "_" + axes[d],
+                         force[d]);
     const auto displacements = solid->point_displacements(monitor_points);
     for (std::size_t p = 0; p < displacements.size(); ++p)
       for (unsigned int d = 0; d < dim; ++d)
@@ -203,13 +196,13 @@ namespace softgrasp
     if (surface_output)
     {
       ContactForceRecord record;
-      record.step   = state.step;
-      record.time   = time;
-      record.forces = surface_output->geom_forces(*solid);
+      record.step               = state.step;
+      record.time               = time;
+      record.forces             = surface_output->geom_forces(*solid);
       HistoryValues contact_row = {{"step", double(state.step)},
                                    {"time", time}};
       const auto    names       = surface_output->history_columns();
-      const auto    values = surface_output->history_values(record.forces);
+      const auto    values      = surface_output->history_values(record.forces);
       for (std::size_t k = 0; k < names.size(); ++k)
         contact_row.emplace_back(names[k], values[k]);
       recorder.add_contact_row(std::move(record), contact_row);
@@ -274,8 +267,7 @@ namespace softgrasp
     return material_library;
   }
 
-  template <int dim>
-  const SolverParameters &Simulation<dim>::parameters() const
+  template <int dim> const SolverParameters &Simulation<dim>::parameters() const
   {
     return solver_parameters;
   }
@@ -290,8 +282,7 @@ namespace softgrasp
     return bodies;
   }
 
-  template <int dim>
-  const ContactSurface<dim> *Simulation<dim>::contact() const
+  template <int dim> const ContactSurface<dim> *Simulation<dim>::contact() const
   {
     return contact_surface.get();
   }

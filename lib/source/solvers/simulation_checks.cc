@@ -12,7 +12,7 @@ namespace softgrasp
 
   template <int dim> void Simulation<dim>::check_contact_setup() const
   {
-    const bool has_surface = !contact_parameters.slave_boundary_ids.empty();
+    const bool has_surface  = !contact_parameters.slave_boundary_ids.empty();
     const bool static_solve = !stepper->has_inertia();
     if (static_solve && boundary_conditions.dirichlet.empty() && !has_surface)
       throw InputError(
@@ -81,12 +81,13 @@ namespace softgrasp
     const double dofs = cells * std::pow(double(k), dim) * dim;
     const double row  = 12.0 * dim * std::pow(2.0 * k + 1, dim);
     const double factor =
-        !stepper->needs_tangent() ? 0.05
-                         : (solver_parameters.linear_solver.resolve(
-                                static_cast<types::global_dof_index>(dofs)) ==
-                                    LinearSolverType::direct
-                                ? 5.0
-                                : 2.0);
+        !stepper->needs_tangent()
+            ? 0.05
+            : (solver_parameters.linear_solver.resolve(
+                   static_cast<types::global_dof_index>(dofs)) ==
+                       LinearSolverType::direct
+                   ? 5.0
+                   : 2.0);
     const double bytes     = dofs * (row * factor + 400);
     const double available = memory_of_machines(comm);
     if (bytes > available)

@@ -59,6 +59,48 @@ namespace softgrasp
                        std::to_string(dim) + "' or remove the entry.");
   }
 
+  namespace
+  {
+    /// Every entry on rank 0 (@p root): with a file, including the
+    /// subsections the file creates (per material id, boundary id, rigid
+    /// body and geom), with the file's values; without, the entries every
+    /// run has.
+    void print_all_parameters(const std::string &filename,
+                              const bool         file_given,
+                              const bool         root)
+    {
+      ParameterHandler prm;
+      if (file_given)
+      {
+        if (SolverProgram::read_dimension(filename) == 2)
+          SolverProgram::read_parameters<2>(prm, filename);
+        else
+          SolverProgram::read_parameters<3>(prm, filename);
+      }
+      else
+      {
+        declare_dimension(prm);
+        Simulation<2>::declare_parameters(prm);
+      }
+      if (root)
+        prm.print_parameters(std::cout, ParameterHandler::PRM);
+    }
+
+    /// Read @p filename, run its simulation and @p report it.
+    template <int dim>
+    void run_file(MPI_Comm                                            comm,
+                  const std::string                                  &filename,
+                  const std::function<void(const Simulation<dim> &)> &report)
+    {
+      ParameterHandler prm;
+      SolverProgram::read_parameters<dim>(prm, filename);
+      const auto simulation = Simulation<dim>::create(comm, prm);
+      simulation->run();
+      if (report)
+        report(*simulation);
+    }
+  } // namespace
+
   int SolverProgram::run(int argc, char **argv) const
   {
     const MPI_Comm comm = MPI_COMM_WORLD;
@@ -104,45 +146,11 @@ namespace softgrasp
     try
     {
       if (print_parameters)
-      {
-        // With a file: every entry, including the subsections the file
-        // creates (per material id, boundary id, rigid body and geom), with
-        // the file's values. Without: the entries every run has.
-        ParameterHandler prm;
-        if (file_given)
-        {
-          if (read_dimension(filename) == 2)
-            read_parameters<2>(prm, filename);
-          else
-            read_parameters<3>(prm, filename);
-        }
-        else
-        {
-          declare_dimension(prm);
-          Simulation<2>::declare_parameters(prm);
-        }
-        if (root)
-          prm.print_parameters(std::cout, ParameterHandler::PRM);
-        return 0;
-      }
-      const unsigned int dim = read_dimension(filename);
-      ParameterHandler   prm;
-      if (dim == 2)
-      {
-        read_parameters<2>(prm, filename);
-        const auto solver = Simulation<2>::create(comm, prm);
-        solver->run();
-        if (report_2d)
-          report_2d(*solver);
-      }
+        print_all_parameters(filename, file_given, root);
+      else if (read_dimension(filename) == 2)
+        run_file<2>(comm, filename, report_2d);
       else
-      {
-        read_parameters<3>(prm, filename);
-        const auto solver = Simulation<3>::create(comm, prm);
-        solver->run();
-        if (report_3d)
-          report_3d(*solver);
-      }
+        run_file<3>(comm, filename, report_3d);
     }
     catch (const std::exception &e)
     {

@@ -58,8 +58,8 @@ namespace softgrasp
     /// the arm through the target link, and a slice parallel to the palm
     /// through the arm's axis at the link, at the equilibrium and the
     /// indented state.
-    void postprocess(const Simulation<3> &solver,
-                     const KinematicsData     &phases) override;
+    void postprocess(const Simulation<3>  &solver,
+                     const KinematicsData &phases) override;
 
   private:
     std::optional<LimbGeometry> geometry; ///< of a layered limb

@@ -6,8 +6,8 @@
 #include <softgrasp/grasp/link_force_history.h>
 #include <softgrasp/io/history_writer.h>
 #include <softgrasp/io/kinematics_file.h>
-#include <softgrasp/solvers/solver_inputs.h>
 #include <softgrasp/postprocess/tissue_injury.h>
+#include <softgrasp/solvers/solver_inputs.h>
 #include <string>
 #include <vector>
 
@@ -123,15 +123,11 @@ namespace softgrasp
       return injury_assessment;
     }
 
-  protected:
-    /**
-     * Put the tissue into @p inputs for a run that starts at the recorded
-     * pose @p object of the grasped body: by default the .prm's mesh,
-     * placed at that pose ('Tissue placement'). Override to supply another
-     * mesh generator, boundary conditions or materials.
-     */
-    virtual void set_up_tissue(SolverInputs<3> &inputs,
-                               const Pose      &object) const;
+    /// The typed solver inputs parsed from the .prm.
+    const SolverInputs<3> &inputs() const
+    {
+      return solver_inputs;
+    }
 
     /**
      * The typed solver inputs of a run over the recorded samples @p cut
@@ -148,11 +144,6 @@ namespace softgrasp
                const std::string  &label,
                const std::string  &entry);
 
-    /// Place the tissue: the mesh and the materials' fibre direction
-    /// fields, both given in the tissue's own frame.
-    static void place_tissue(SolverInputs<3>    &inputs,
-                             const Placement<3> &placement);
-
     /// The last recorded state of a run: how well the link forces balance
     /// the supports' reactions (|sum F_links - R| / max |F_link|) and the
     /// deepest nodal penetration of a link (m). Collective.
@@ -163,22 +154,44 @@ namespace softgrasp
     };
     StateCheck final_state_check(const Simulation<3> &solver) const;
 
-    /// Study-specific output after the run (all ranks, collective).
-    virtual void postprocess(const Simulation<3> &solver,
-                             const KinematicsData     &phases);
+  protected:
+    /**
+     * Put the tissue into @p inputs for a run that starts at the recorded
+     * pose @p object of the grasped body: by default the .prm's mesh,
+     * placed at that pose ('Tissue placement'). Override to supply another
+     * mesh generator, boundary conditions or materials.
+     */
+    virtual void set_up_tissue(SolverInputs<3> &inputs,
+                               const Pose      &object) const;
 
-    MPI_Comm             comm;
-    GraspStudyParameters parameters;
-    SolverInputs<3>      solver_inputs;
+    /// Place the tissue: the mesh and the materials' fibre direction
+    /// fields, both given in the tissue's own frame.
+    static void place_tissue(SolverInputs<3>    &inputs,
+                             const Placement<3> &placement);
+
+    /// Study-specific output after the run (all ranks, collective).
+    virtual void postprocess(const Simulation<3>  &solver,
+                             const KinematicsData &phases);
+
+    MPI_Comm communicator() const
+    {
+      return comm;
+    }
+    const GraspStudyParameters &study_parameters() const
+    {
+      return parameters;
+    }
 
   private:
-    void summarise(const Simulation<3> &solver,
-                   const KinematicsData     &phases);
-    void write_link_table(const Simulation<3> &solver,
-                          const KinematicsData     &phases);
+    void summarise(const Simulation<3> &solver, const KinematicsData &phases);
+    void write_link_table(const Simulation<3>  &solver,
+                          const KinematicsData &phases);
     /// Assess the final state (all ranks); write and print it on rank 0.
     void assess_injury(const Simulation<3> &solver);
 
+    MPI_Comm                      comm;
+    GraspStudyParameters          parameters;
+    SolverInputs<3>               solver_inputs;
     double                        extra_angle = 0;
     Summary                       result;
     HistoryWriter                 table;

@@ -57,11 +57,21 @@ namespace softgrasp
    *    where the pull started, applied to the link's pose at the level
    *    (the finger joints hold the level's closure; the base slides); the
    *    humerus stays fixed.
+   *
+   * It is composed of the arm grasp (arm()), whose tissue, solver settings
+   * and rigid scene it uses; it does not extend it.
    */
-  class PullSweepStudy : public ArmGraspStudy
+  class PullSweepStudy
   {
   public:
     PullSweepStudy(MPI_Comm comm, dealii::ParameterHandler &prm);
+
+    /// The arm grasp of the .prm: the tissue, the solver settings, the
+    /// kinematics file and the rigid scene of the sweep.
+    const ArmGraspStudy &arm() const
+    {
+      return arm_study;
+    }
 
     /**
      * Close along the 'indentation' phase of @p kinematics until the
@@ -110,8 +120,10 @@ namespace softgrasp
     void record(const FeGripLevel &level, const unsigned int k) const;
 
   private:
-    std::string output;   ///< the study's 'Output/Directory'
-    std::string settings; ///< settings_text()
+    MPI_Comm      comm;
+    ArmGraspStudy arm_study;
+    std::string   output;   ///< the study's 'Output/Directory'
+    std::string   settings; ///< settings_text()
   };
 
   /**

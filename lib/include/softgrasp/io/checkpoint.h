@@ -1,6 +1,8 @@
 #ifndef softgrasp_io_checkpoint_h
 #define softgrasp_io_checkpoint_h
 
+#include <boost/serialization/version.hpp>
+#include <cstdint>
 #include <deal.II/distributed/tria.h>
 #include <ostream>
 #include <softgrasp/mechanics/solid_system.h>
@@ -10,6 +12,29 @@
 
 namespace softgrasp
 {
+  /**
+   * What the data files of a checkpoint hold, recorded with them: a resume
+   * checks it against its own mesh and element before it hands the data
+   * to the solution transfer, whatever the manifest says.
+   */
+  struct CheckpointLayout
+  {
+    unsigned int       dim            = 0; ///< 0: not recorded (format 4)
+    unsigned int       n_coarse_cells = 0;
+    unsigned long long n_cells        = 0; ///< active cells, all ranks
+    unsigned int       degree         = 0; ///< of the displacement element
+    unsigned int       dofs_per_cell  = 0;
+    unsigned long long n_dofs         = 0;
+    unsigned int       n_fields       = 0; ///< displacement and the others
+
+    template <class Archive>
+    void serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &dim &n_coarse_cells &n_cells &degree &dofs_per_cell &n_dofs
+          &n_fields;
+    }
+  };
+
   /// The scalar state of a run that a restart needs besides the fields.
   struct RunState
   {
@@ -29,12 +54,17 @@ namespace softgrasp
     /// The typed contact force history, one packed record per step.
     std::vector<std::vector<double>> contact_force_records;
 
+    /// What the data files hold (recorded since class version 1).
+    CheckpointLayout layout;
+
     template <class Archive>
-    void serialize(Archive &archive, const unsigned int /*version*/)
+    void serialize(Archive &archive, const unsigned int version)
     {
       archive &time &step_size &step &n_outputs &history_columns &history_rows
           &output_records &contact_columns &contact_rows &n_extra_fields
               &integrator_state &contact_force_records;
+      if (version >= 1)
+        archive &layout;
     }
   };
 
@@ -70,12 +100,16 @@ namespace softgrasp
     /**
      * Load into @p tria (which holds the same coarse mesh as the saved run)
      * and @p system (set up here); returns the saved RunState. The fields
-     * saved besides the displacement go into @p extra (owned entries).
-     * Warnings (a damaged newest checkpoint) go to @p log on rank 0.
+     * saved besides the displacement, @p n_extra of them, go into @p extra
+     * (owned entries). The data are checked against the run's mesh,
+     * element and fields before they are read: a mismatch is an
+     * InputError naming both. Warnings (a damaged newest checkpoint) go
+     * to @p log on rank 0.
      */
     RunState load(dealii::parallel::distributed::Triangulation<dim>  &tria,
                   SolidSystem<dim>                                   &system,
                   std::vector<dealii::TrilinosWrappers::MPI::Vector> &extra,
+                  unsigned int                                        n_extra,
                   std::ostream &log) const;
 
     /// The manifest's format version (3: with the typed contact force
@@ -83,6 +117,13 @@ namespace softgrasp
     static constexpr unsigned int format_version = 4;
 
   private:
+    /// Rank 0: check the free space (twice the last checkpoint, or
+    /// @p estimate bytes) and create the empty "checkpoint.new"; "" or the
+    /// error.
+    std::string prepare_folder(std::uintmax_t estimate) const;
+    /// Rank 0: write @p state and the manifest into "checkpoint.new" and
+    /// rename it into place, keeping the previous one; "" or the error.
+    std::string complete(const RunState &state) const;
     /// The checkpoint to resume from, validated on rank 0, on all ranks.
     std::string select(MPI_Comm comm, std::ostream &log) const;
     /// Why @p path cannot be used ("" if it can); settings are not compared.
@@ -95,5 +136,7 @@ namespace softgrasp
     Settings    settings;
   };
 } // namespace softgrasp
+
+BOOST_CLASS_VERSION(softgrasp::RunState, 1)
 
 #endif

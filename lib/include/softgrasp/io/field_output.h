@@ -43,6 +43,13 @@ namespace softgrasp
     std::vector<std::pair<double, std::string>> records;
 
   private:
+    /// Write @p data_out as output @p index at @p time: the VTU in
+    /// parallel under a temporary name, checked, renamed, and the PVD.
+    void write_files(const dealii::DataOut<dim> &data_out,
+                     MPI_Comm                    comm,
+                     double                      time,
+                     unsigned int                index);
+
     std::string directory;
     std::string base_name;
   };

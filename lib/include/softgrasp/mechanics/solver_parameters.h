@@ -86,7 +86,7 @@ namespace softgrasp
   {
     /// 'Time/Integrator': the name of a registered time stepper
     std::string integrator = "quasi-static";
-    double         end_time   = 1.0; ///< s
+    double      end_time   = 1.0; ///< s
     /// nominal load step (quasi-static) or record interval (explicit), s
     double       step_size     = 0.1;
     double       minimum_step  = 1e-6; ///< smallest step after cut-backs, s

@@ -44,7 +44,7 @@ namespace softgrasp
     bool needs_tangent() const override;
     bool has_inertia() const override;
     unsigned int
-    n_checkpoint_fields(const SolverParameters &parameters) const override;
+         n_checkpoint_fields(const SolverParameters &parameters) const override;
     void check_inputs(const SimulationAccess<dim> &run) const override;
     std::unique_ptr<ContactSurface<dim>>
          make_contact(const SimulationAccess<dim> &run,

@@ -109,8 +109,7 @@ namespace softgrasp
   };
 
   /// 'Time/Integrator = implicit dynamic': ImplicitStepper with inertia.
-  template <int dim>
-  class ImplicitDynamicStepper : public ImplicitStepper<dim>
+  template <int dim> class ImplicitDynamicStepper : public ImplicitStepper<dim>
   {
   public:
     ImplicitDynamicStepper();

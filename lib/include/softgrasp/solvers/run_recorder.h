@@ -32,7 +32,7 @@ namespace softgrasp
   template <int dim> class RunRecorder
   {
   public:
-    RunRecorder(const OutputParameters  &output,
+    RunRecorder(const OutputParameters            &output,
                 typename Checkpoint<dim>::Settings settings);
 
     /// Lock the output directory; a new run (@p resume false) clears an
@@ -54,10 +54,10 @@ namespace softgrasp
     /// Whether the fields of step @p step have been written.
     bool fields_written_at(const unsigned int step) const;
     /// VTU of @p system at @p time, once per step @p state.step.
-    void write_fields(const SolidSystem<dim>                   &system,
-                      const MaterialLibrary                    &materials,
-                      const double                              time,
-                      RunState                                 &state,
+    void write_fields(const SolidSystem<dim>                       &system,
+                      const MaterialLibrary                        &materials,
+                      const double                                  time,
+                      RunState                                     &state,
                       const typename FieldOutput<dim>::ExtraFields &extra);
 
     /// Checkpoint of @p system with @p state (which gets the tables).
@@ -65,16 +65,18 @@ namespace softgrasp
         const dealii::parallel::distributed::Triangulation<dim> &tria,
         const SolidSystem<dim>                                  &system,
         RunState                                                &state,
-        const std::vector<const dealii::TrilinosWrappers::MPI::Vector *>
-            &extra) const;
+        const std::vector<const dealii::TrilinosWrappers::MPI::Vector *> &extra)
+        const;
 
-    /// Load the newest usable checkpoint into @p tria and @p system; the
-    /// tables continue from it. Returns its RunState.
-    RunState load_checkpoint(
-        dealii::parallel::distributed::Triangulation<dim>  &tria,
-        SolidSystem<dim>                                   &system,
-        std::vector<dealii::TrilinosWrappers::MPI::Vector> &fields,
-        std::ostream                                       &log);
+    /// Load the newest usable checkpoint into @p tria and @p system, with
+    /// @p n_fields fields besides the displacement; the tables continue
+    /// from it. Returns its RunState.
+    RunState
+    load_checkpoint(dealii::parallel::distributed::Triangulation<dim>  &tria,
+                    SolidSystem<dim>                                   &system,
+                    std::vector<dealii::TrilinosWrappers::MPI::Vector> &fields,
+                    unsigned int  n_fields,
+                    std::ostream &log);
 
     const HistoryWriter                   &history() const;
     const HistoryWriter                   &contact_history() const;

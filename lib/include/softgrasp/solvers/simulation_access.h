@@ -42,9 +42,9 @@ namespace softgrasp
     /// The loads (their time is set by the stepper).
     BoundaryConditions<dim> &boundary_conditions() const;
     SolidSystem<dim>        &solid() const;
-    const dealii::parallel::distributed::Triangulation<dim> &
-                                triangulation() const;
-    dealii::TimerOutput        &timers() const;
+    const dealii::parallel::distributed::Triangulation<dim>                      &
+    triangulation() const;
+    dealii::TimerOutput &timers() const;
     /// Progress and summaries (rank 0).
     dealii::ConditionalOStream &out() const;
     /// Newton details ('Output/Verbose', rank 0).

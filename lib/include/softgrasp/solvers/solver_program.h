@@ -26,7 +26,7 @@ namespace softgrasp
 
   struct SolverProgram
   {
-    std::string                                     default_parameter_file;
+    std::string                                default_parameter_file;
     std::function<void(const Simulation<2> &)> report_2d;
     std::function<void(const Simulation<3> &)> report_3d;
 
