@@ -3,7 +3,8 @@
 #  - a second run moves the first run's results aside ('move aside'), or
 #    refuses ('refuse'), or deletes them ('replace');
 #  - a run refuses a directory locked by a live run, takes over the lock
-#    of a killed one, and removes its lock when it ends;
+#    of a killed one, removes its lock when it ends, and names a damaged
+#    lock as damaged;
 #  - an output directory that is a file, or not writable, ends a 2-rank
 #    run with the message (no hang).
 #   output_directory.sh <block_compression> <its .prm> <work dir>
@@ -48,6 +49,16 @@ expect_message locked.log "Another run (process $holder on host"
 kill $holder; wait $holder 2>/dev/null || true
 run_expect 0 stale.log "$exe" replace.prm
 [ ! -e out/.softgrasp.lock ] || { echo "FAIL: the stale lock was left"; exit 1; }
+
+# A damaged lock (empty, or without a process id) is reported as damaged,
+# not as a live run of "process 0 on host ''".
+for content in "" "garbage"; do
+  printf '%s' "$content" > out/.softgrasp.lock
+  run_expect 1 damaged-lock.log "$exe" replace.prm
+  expect_clean_error damaged-lock.log
+  expect_message damaged-lock.log "out/.softgrasp.lock' of the output directory 'out' is damaged"
+done
+rm out/.softgrasp.lock
 
 # The output directory is a file, or is not writable: the whole 2-rank job
 # ends with the message.

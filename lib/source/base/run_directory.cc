@@ -67,7 +67,14 @@ namespace softgrasp
         std::ifstream in(file);
         std::string   host;
         long          pid = 0;
-        in >> host >> pid;
+        if (!(in >> host >> pid) || pid <= 0)
+          return "The lock file '" + file + "' of the output directory '" +
+                 directory +
+                 "' is damaged: it names no host and process (a run killed "
+                 "while it took the lock, or an edited file), so this run "
+                 "cannot tell whether another run is writing there. Fix: if "
+                 "no run is writing into '" +
+                 directory + "', delete '" + file + "'.";
         const bool alive = running(pid);
         if (host == host_name() && (!alive || pid == getpid()))
         {
