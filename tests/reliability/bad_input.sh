@@ -101,4 +101,9 @@ grep -qE "the direct solver \(MUMPS\) failed|an element inverted" held-in-x.log 
   echo "FAIL: held-in-x: no failed step reported"; exit 1; }
 expect_message held-in-x.log "-> cutting back"
 expect_message held-in-x.log "The last converged state (step 0, t = 0 s) was written"
+# Another program's .prm (a grasp study's 'Rigid environment'): the file
+# is named whole and the message says it may belong to another program.
+printf 'subsection Rigid environment\n  set Scene file = hand.xml\nend\n' > study.prm
+refused study "Line <1> of file <study.prm>: There is no such subsection to be entered: Rigid environment"
+expect_message study.log "the file may be written for another softgrasp program"
 echo "bad input: all cases passed"

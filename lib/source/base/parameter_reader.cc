@@ -175,11 +175,25 @@ namespace softgrasp
       for (auto pos = message.find(placeholder); pos != std::string::npos;
            pos      = message.find(placeholder, pos + source.size() + 2))
         message.replace(pos, placeholder.size(), "<" + source + ">");
-      throw InputError("The parameter file '" + source + "' cannot be read: " +
-                       printable(Utilities::trim(message)) +
-                       " Fix: check the spelling and the allowed values; "
-                       "the programs list every parameter with its "
-                       "documentation (see doc/parameters/).");
+      // some of deal.II's messages leave the name's bracket open
+      const std::string open = "<input string:";
+      for (auto pos = message.find(open); pos != std::string::npos;
+           pos      = message.find(open, pos + source.size() + 3))
+        message.replace(pos, open.size(), "<" + source + ">:");
+      const bool foreign =
+          message.find("There is no such subsection to be entered") !=
+          std::string::npos;
+      throw InputError(
+          "The parameter file '" + source +
+          "' cannot be read: " + printable(Utilities::trim(message)) +
+          (foreign ? " This program has no such subsection: the file may be "
+                     "written for another softgrasp program (each program's "
+                     "subsections are listed in doc/parameters/ and by "
+                     "--print-parameters)."
+                   : "") +
+          " Fix: check the spelling and the allowed values; the programs "
+          "list every parameter with its documentation (see "
+          "doc/parameters/).");
     }
   }
 
