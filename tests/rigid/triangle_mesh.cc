@@ -1,5 +1,6 @@
 // Triangle-mesh geoms (STL/OBJ) through the bounding-volume hierarchy:
-//  - a box written as ASCII STL, binary STL and OBJ (quads) reads back with
+//  - a box written as ASCII STL, binary STL and OBJ (quads), and inside out
+//    (every triangle reversed), reads back with
 //    the signed distance of the analytic BoxShape to 1e-12 at 2000 random
 //    points inside and outside, and the same outward normals outside;
 //  - an icosphere (1280 triangles) matches the analytic sphere within its
@@ -102,6 +103,11 @@ main()
   }
   write_ascii_stl("box_ascii.stl", box_vertices, box_triangles);
   write_binary_stl("box_binary.stl", box_vertices, box_triangles);
+  // The same box inside out (every triangle reversed): turned outward.
+  Triangles inside_out = box_triangles;
+  for (auto &tri : inside_out)
+    std::swap(tri[1], tri[2]);
+  write_ascii_stl("box_inside_out.stl", box_vertices, inside_out);
   {
     std::ofstream obj("box.obj");
     obj << std::setprecision(17) << "# box\n";
@@ -119,7 +125,8 @@ main()
   for (unsigned int i = 0; i < 2000; ++i)
     points.emplace_back(
         uniform(random) * h[0], uniform(random) * h[1], uniform(random) * h[2]);
-  for (const std::string file : {"box_ascii.stl", "box_binary.stl", "box.obj"})
+  for (const std::string file :
+       {"box_ascii.stl", "box_binary.stl", "box.obj", "box_inside_out.stl"})
   {
     const auto mesh  = TriangleMeshShape::read(file);
     double     worst = 0, worst_normal = 0;

@@ -11,6 +11,7 @@ namespace softgrasp
                    const std::vector<std::string> &pictures,
                    std::ostream                   &log)
   {
+    RunManifest::note(directory + "/" + script);
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
     {
       log << "gnuplot not found: " << script

@@ -1,6 +1,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector_operation.h>
+#include <set>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/contact/contact_surface.h>
 
@@ -17,49 +18,61 @@ namespace softgrasp
   }
 
   template <int dim>
+  template <typename CellIterator>
+  bool ContactSurface<dim>::on_slave(const CellIterator &cell,
+                                     const unsigned int  f) const
+  {
+    return cell->face(f)->at_boundary() &&
+           is_slave_boundary(cell->face(f)->boundary_id());
+  }
+
+  template <int dim>
   void ContactSurface<dim>::setup(const SolidSystem<dim> &system)
   {
-    comm                      = system.communicator();
-    const auto        &fe     = system.fe();
-    const auto        &dofs   = system.dof_handler();
-    const IndexSet    &owned  = system.locally_owned_dofs();
-    const IndexSet    &ghosts = system.locally_relevant_dofs();
-    const unsigned int n_pts  = fe.base_element(0).n_dofs_per_cell();
-    const unsigned int degree = fe.degree;
+    comm                     = system.communicator();
+    const auto        &fe    = system.fe();
+    const unsigned int n_pts = fe.base_element(0).n_dofs_per_cell();
     cell_nodes.assign(n_pts, {});
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
     {
       const auto [c, k] = fe.system_to_component_index(i);
       cell_nodes[k][c]  = i;
     }
+    collect_nodes(system, nodal_areas(system));
+    const unsigned int total =
+        Utilities::MPI::sum<unsigned int>(node_list.size(), comm);
+    if (total == 0)
+      throw InputError("The contact surface is empty: no boundary face has "
+                       "one of the ids in 'Contact/Slave boundary ids'. Fix: "
+                       "give the boundary ids of the surface that touches "
+                       "the rigid bodies.");
+  }
 
-    const std::set<types::boundary_id> slave(
-        parameters.slave_boundary_ids.begin(),
-        parameters.slave_boundary_ids.end());
-    const auto on_slave = [&](const auto &cell, const unsigned int f)
-    {
-      return cell->face(f)->at_boundary() &&
-             slave.count(cell->face(f)->boundary_id()) > 0;
-    };
-
-    // Reference nodal areas D_j = int N_j dA over the slave surface.
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  ContactSurface<dim>::nodal_areas(const SolidSystem<dim> &system) const
+  {
+    const auto                   &fe = system.fe();
     TrilinosWrappers::MPI::Vector area;
-    area.reinit(owned, ghosts, comm, true);
+    area.reinit(system.locally_owned_dofs(),
+                system.locally_relevant_dofs(),
+                comm,
+                true);
     FEFaceValues<dim>                    face_values(system.mapping(),
                                   fe,
-                                  QGauss<dim - 1>(degree + 1),
+                                  QGauss<dim - 1>(fe.degree + 1),
                                   update_values | update_JxW_values);
     std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-    for (const auto &cell : dofs.active_cell_iterators())
+    for (const auto &cell : system.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
           if (on_slave(cell, f))
           {
             face_values.reinit(cell, f);
             cell->get_dof_indices(indices);
-            for (unsigned int k = 0; k < n_pts; ++k)
+            for (const auto &node : cell_nodes)
             {
-              const unsigned int i   = cell_nodes[k][0];
+              const unsigned int i   = node[0];
               double             sum = 0;
               for (const auto q : face_values.quadrature_point_indices())
                 sum += face_values.shape_value(i, q) * face_values.JxW(q);
@@ -67,15 +80,24 @@ namespace softgrasp
             }
           }
     area.compress(VectorOperation::add);
+    return area;
+  }
 
-    // The owned nodes, found from owned and ghost cells.
-    FEValues<dim>                     support(system.mapping(),
+  template <int dim>
+  void
+  ContactSurface<dim>::collect_nodes(const SolidSystem<dim> &system,
+                                     const TrilinosWrappers::MPI::Vector &area)
+  {
+    const auto                          &fe    = system.fe();
+    const IndexSet                      &owned = system.locally_owned_dofs();
+    FEValues<dim>                        support(system.mapping(),
                           fe,
                           Quadrature<dim>(fe.get_unit_support_points()),
                           update_quadrature_points);
-    std::set<types::global_dof_index> seen;
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    std::set<types::global_dof_index>    seen;
     node_list.clear();
-    for (const auto &cell : dofs.active_cell_iterators())
+    for (const auto &cell : system.dof_handler().active_cell_iterators())
     {
       if (cell->is_artificial())
         continue;
@@ -88,16 +110,16 @@ namespace softgrasp
       support.reinit(cell);
       for (const auto f : cell->face_indices())
         if (on_slave(cell, f))
-          for (unsigned int k = 0; k < n_pts; ++k)
+          for (const auto &local : cell_nodes)
           {
-            const unsigned int i = cell_nodes[k][0];
+            const unsigned int i = local[0];
             if (!fe.has_support_on_face(i, f) ||
                 !owned.is_element(indices[i]) || seen.count(indices[i]))
               continue;
             seen.insert(indices[i]);
             Node node;
             for (unsigned int c = 0; c < dim; ++c)
-              node.dofs[c] = indices[cell_nodes[k][c]];
+              node.dofs[c] = indices[local[c]];
             const Point<dim> &X = support.quadrature_point(i);
             for (unsigned int d = 0; d < dim; ++d)
               node.reference_position[d] = X[d];
@@ -113,13 +135,6 @@ namespace softgrasp
             node_list.push_back(node);
           }
     }
-    const unsigned int total =
-        Utilities::MPI::sum<unsigned int>(node_list.size(), comm);
-    if (total == 0)
-      throw InputError("The contact surface is empty: no boundary face has "
-                       "one of the ids in 'Contact/Slave boundary ids'. Fix: "
-                       "give the boundary ids of the surface that touches "
-                       "the rigid bodies.");
   }
 
   template <int dim>

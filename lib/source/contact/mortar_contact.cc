@@ -12,6 +12,16 @@ namespace softgrasp
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// @p v after its inserted values are exchanged between processes.
+    TrilinosWrappers::MPI::Vector &compressed(TrilinosWrappers::MPI::Vector &v)
+    {
+      v.compress(VectorOperation::insert);
+      return v;
+    }
+  } // namespace
+
   template <int dim>
   MortarContact<dim>::MortarContact(const ContactParameters &parameters,
                                     const RigidBodySet      &bodies,
@@ -152,14 +162,97 @@ namespace softgrasp
   }
 
   template <int dim>
+  NodalContactInput MortarContact<dim>::contact_input(const unsigned int     j,
+                                                      const Eigen::Vector3d &x,
+                                                      const Eigen::Vector3d &f,
+                                                      const Proximity &p) const
+  {
+    NodalContactInput input;
+    input.f   = f;
+    input.mu  = parameters.friction_coefficient;
+    input.c   = law[j].c_n;
+    input.c_t = law[j].c_t;
+    input.gap = p.gap;
+    input.n   = p.body >= 0 ? p.normal : Eigen::Vector3d(0, 0, 1);
+    input.H.setZero();
+    input.w.setZero();
+    if (p.body < 0)
+    {
+      input.gap = std::numeric_limits<double>::max();
+      return input;
+    }
+    // The slip increment: the node's motion relative to the geom since the
+    // last converged step.
+    const Pose &now = poses_now[p.body][p.geom];
+    const Pose &old = poses_converged[p.body][p.geom];
+    input.w = x - now.to_world(old.to_local(node_list[j].last_converged));
+    if (dim == 2)
+      input.w[2] = 0;
+    if (input.n.dot(f) - input.c * input.gap > 0)
+      input.H = normal_gradient(p, x);
+    return input;
+  }
+
+  template <int dim>
+  void MortarContact<dim>::keep_constrained_rows(const Node            &node,
+                                                 NodeLaw               &rule,
+                                                 const Eigen::Vector3d &f)
+  {
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+      {
+        const bool a_free = a < dim && node.free[a];
+        const bool b_free = b < dim && node.free[b];
+        if (!a_free)
+        {
+          rule.A(a, b) = (a == b ? 1.0 : 0.0);
+          rule.B(a, b) = 0;
+        }
+        else if (!b_free)
+        {
+          rule.A(a, b) = 0;
+          rule.B(a, b) = 0;
+        }
+      }
+    for (unsigned int a = 0; a < 3; ++a)
+      if (a >= dim || !node.free[a])
+        rule.phi[a] = f[a];
+  }
+
+  template <int dim>
+  void MortarContact<dim>::store(const unsigned int               j,
+                                 const Proximity                 &p,
+                                 const NodalContactInput         &input,
+                                 const NodalContactLinearization &lin)
+  {
+    Node    &node = node_list[j];
+    NodeLaw &rule = law[j];
+    if (lin.status != ContactStatus::inactive && rule.pair_body < 0)
+    {
+      rule.pair_body = p.body;
+      rule.pair_geom = p.geom;
+    }
+    node.status = lin.status;
+    node.body   = p.body;
+    node.geom   = p.geom;
+    node.gap    = p.gap;
+    node.normal = input.n;
+    node.force  = input.f;
+    node.slip   = lin.slip;
+    rule.phi    = lin.phi;
+    rule.A      = lin.A;
+    rule.B      = lin.B;
+    keep_constrained_rows(node, rule, input.f);
+  }
+
+  template <int dim>
   void MortarContact<dim>::evaluate(const SolidSystem<dim> &system)
   {
     TimerOutput::Scope scope(timer, "contact");
     place_bodies(current_time, poses_now);
-    const auto &u           = system.ghosted_solution();
-    const auto &f_int       = system.internal_forces();
-    const auto &f_ext       = system.external_forces();
-    const auto &constraints = system.constraint_set();
+    const auto &u     = system.ghosted_solution();
+    const auto &f_int = system.internal_forces();
+    const auto &f_ext = system.external_forces();
 
     std::array<TrilinosWrappers::MPI::Vector, dim> combination;
     for (auto &v : combination)
@@ -180,76 +273,21 @@ namespace softgrasp
       Eigen::Vector3d f    = Eigen::Vector3d::Zero();
       for (unsigned int c = 0; c < dim; ++c)
       {
-        node.free[c] = !constraints.is_constrained(node.dofs[c]);
+        node.free[c] = !system.constraint_set().is_constrained(node.dofs[c]);
         x[c] += u[node.dofs[c]];
         if (node.free[c])
           f[c] = f_int[node.dofs[c]] - f_ext[node.dofs[c]];
       }
-      const ContactStatus before = node.status;
-      const Proximity     p      = pair(j, x);
-      NodalContactInput   input;
-      input.f   = f;
-      input.mu  = parameters.friction_coefficient;
-      input.c   = rule.c_n;
-      input.c_t = rule.c_t;
-      input.gap = p.gap;
-      input.n   = p.body >= 0 ? p.normal : Eigen::Vector3d(0, 0, 1);
-      input.H.setZero();
-      input.w.setZero();
-      if (p.body >= 0)
-      {
-        const Pose &now = poses_now[p.body][p.geom];
-        const Pose &old = poses_converged[p.body][p.geom];
-        input.w         = x - now.to_world(old.to_local(node.last_converged));
-        if (dim == 2)
-          input.w[2] = 0;
-        if (input.n.dot(f) - input.c * input.gap > 0)
-          input.H = normal_gradient(p, x);
-      }
-      else
-        input.gap = std::numeric_limits<double>::max();
-      const NodalContactLinearization lin = evaluate_nodal_contact(input);
+      const ContactStatus             before = node.status;
+      const Proximity                 p      = pair(j, x);
+      const NodalContactInput         input  = contact_input(j, x, f, p);
+      const NodalContactLinearization lin    = evaluate_nodal_contact(input);
       if (lin.status != ContactStatus::inactive &&
           before != ContactStatus::inactive &&
           (p.body != node.body || p.geom != node.geom))
         ++switches;
 
-      if (lin.status != ContactStatus::inactive && rule.pair_body < 0)
-      {
-        rule.pair_body = p.body;
-        rule.pair_geom = p.geom;
-      }
-      node.status = lin.status;
-      node.body   = p.body;
-      node.geom   = p.geom;
-      node.gap    = p.gap;
-      node.normal = input.n;
-      node.force  = f;
-      node.slip   = lin.slip;
-      rule.phi    = lin.phi;
-      rule.A      = lin.A;
-      rule.B      = lin.B;
-      // Constrained components (symmetry planes, hanging nodes) keep their
-      // own equations; the contact conditions act on the free ones.
-      for (unsigned int a = 0; a < 3; ++a)
-        for (unsigned int b = 0; b < 3; ++b)
-        {
-          const bool a_free = a < dim && node.free[a];
-          const bool b_free = b < dim && node.free[b];
-          if (!a_free)
-          {
-            rule.A(a, b) = (a == b ? 1.0 : 0.0);
-            rule.B(a, b) = 0;
-          }
-          else if (!b_free)
-          {
-            rule.A(a, b) = 0;
-            rule.B(a, b) = 0;
-          }
-        }
-      for (unsigned int a = 0; a < 3; ++a)
-        if (a >= dim || !node.free[a])
-          rule.phi[a] = f[a];
+      store(j, p, input, lin);
 
       if (lin.status != ContactStatus::inactive)
       {
@@ -269,16 +307,10 @@ namespace softgrasp
         ++changes;
     }
     for (unsigned int b = 0; b < dim; ++b)
-    {
-      combination[b].compress(VectorOperation::insert);
-      row_combination[b] = combination[b];
-    }
-    is_governed.compress(VectorOperation::insert);
-    coefficients.compress(VectorOperation::insert);
-    values.compress(VectorOperation::insert);
-    governed                = is_governed;
-    constraint_coefficients = coefficients;
-    constraint_values       = values;
+      row_combination[b] = compressed(combination[b]);
+    governed                = compressed(is_governed);
+    constraint_coefficients = compressed(coefficients);
+    constraint_values       = compressed(values);
     unsymmetric_count       = Utilities::MPI::sum(unsymmetric, comm);
     active_count            = Utilities::MPI::sum(active, comm);
     slip_count              = Utilities::MPI::sum(slipping, comm);

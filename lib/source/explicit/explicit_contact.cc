@@ -51,6 +51,51 @@ namespace softgrasp
   }
 
   template <int dim>
+  void ExplicitContact<dim>::correct(Node                  &node,
+                                     const Proximity       &p,
+                                     const Eigen::Vector3d &mask,
+                                     const Eigen::Vector3d &x_old,
+                                     const double           k,
+                                     const double           allowed,
+                                     Eigen::Vector3d       &x) const
+  {
+    const double mu = parameters.friction_coefficient;
+    // Normal multiplier: back onto the surface.
+    const Eigen::Vector3d x_trial = x;
+    Proximity             q       = project(p.body, p.geom, mask, x, -allowed);
+    const double          f_n     = k * q.normal.dot(x - x_trial);
+    // Tangential multiplier: stay at the surface point of t^n, carried
+    // along by the body; Coulomb's cone bounds it.
+    const Pose           &now     = poses_now[p.body][p.geom];
+    const Pose           &old     = poses_old[p.body][p.geom];
+    const Eigen::Vector3d x_stick = now.to_world(old.to_local(x_old));
+    Eigen::Vector3d       d       = x_stick - x;
+    d -= q.normal * q.normal.dot(d);
+    d           = d.cwiseProduct(mask);
+    node.status = ContactStatus::stick;
+    if (mu == 0 || !(f_n > 0))
+    {
+      d.setZero();
+      node.status = ContactStatus::slip;
+    }
+    else if (k * d.norm() > mu * f_n)
+    {
+      d *= mu * f_n / (k * d.norm());
+      node.status = ContactStatus::slip;
+    }
+    if (d.squaredNorm() > 0)
+    {
+      x += d;
+      q = project(p.body, p.geom, mask, x, -allowed); // curved surfaces
+    }
+    node.force  = k * (x - x_trial);
+    node.gap    = q.gap;
+    node.normal = q.normal;
+    node.slip   = x - x_stick;
+    node.slip -= q.normal * q.normal.dot(node.slip);
+  }
+
+  template <int dim>
   void ExplicitContact<dim>::enforce(const double      time,
                                      const double      dt,
                                      const double      h,
@@ -64,7 +109,6 @@ namespace softgrasp
     poses_old.swap(poses_now);
     this->set_time(time);
     this->place_bodies(time, poses_now);
-    const double mu     = parameters.friction_coefficient;
     unsigned int active = 0, slipping = 0;
     double       worst = 0;
     // What is left of the initial overlaps: they shrink linearly to zero.
@@ -101,44 +145,11 @@ namespace softgrasp
       if (p.body < 0 || p.gap >= -allowed || m == 0)
         continue;
 
-      // Normal multiplier: back onto the surface.
-      const Eigen::Vector3d x_trial = x;
-      Proximity             q   = project(p.body, p.geom, mask, x, -allowed);
-      const double          k   = m / (dt * h); // N/m
-      const double          f_n = k * q.normal.dot(x - x_trial);
-      // Tangential multiplier: stay at the surface point of t^n, carried
-      // along by the body; Coulomb's cone bounds it.
-      const Pose           &now     = poses_now[p.body][p.geom];
-      const Pose           &old     = poses_old[p.body][p.geom];
-      const Eigen::Vector3d x_stick = now.to_world(old.to_local(x_old));
-      Eigen::Vector3d       d       = x_stick - x;
-      d -= q.normal * q.normal.dot(d);
-      d           = d.cwiseProduct(mask);
-      node.status = ContactStatus::stick;
-      if (mu == 0 || !(f_n > 0))
-      {
-        d.setZero();
-        node.status = ContactStatus::slip;
-      }
-      else if (k * d.norm() > mu * f_n)
-      {
-        d *= mu * f_n / (k * d.norm());
-        node.status = ContactStatus::slip;
-      }
-      if (d.squaredNorm() > 0)
-      {
-        x += d;
-        q = project(p.body, p.geom, mask, x, -allowed); // curved surfaces
-      }
+      correct(node, p, mask, x_old, m / (dt * h), allowed, x);
       for (unsigned int c = 0; c < dim; ++c)
         if (node.free[c])
           u(node.dofs[c]) = x[c] - node.reference_position[c];
-      node.force  = k * (x - x_trial);
-      node.gap    = q.gap;
-      node.normal = q.normal;
-      node.slip   = x - x_stick;
-      node.slip -= q.normal * q.normal.dot(node.slip);
-      worst = std::max(worst, -q.gap - allowed);
+      worst = std::max(worst, -node.gap - allowed);
       ++active;
       if (node.status == ContactStatus::slip)
         ++slipping;

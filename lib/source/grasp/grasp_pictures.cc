@@ -8,73 +8,70 @@
 #include <softgrasp/grasp/grasp_pictures.h>
 #include <softgrasp/postprocess/principal_strains.h>
 #include <softgrasp/rigid/rigid_body_set.h>
+#include <sstream>
 
 namespace softgrasp
 {
   using namespace dealii;
 
-  void write_grasp_picture(const SolidSystem<3>            &system,
-                           const KinematicsData            &kinematics,
-                           const double                     time,
-                           const std::vector<unsigned int> &hidden_boundaries,
-                           const std::string               &directory,
-                           const std::string               &base,
-                           std::ostream                    &log)
+  namespace
   {
-    // The 8 vertices of the unit cell as quadrature points.
-    std::vector<Point<3>> vertices;
-    for (const unsigned int v : GeometryInfo<3>::vertex_indices())
-      vertices.push_back(GeometryInfo<3>::unit_cell_vertex(v));
-    const Quadrature<3>              at_vertices(vertices);
-    FEValues<3>                      fe_values(system.mapping(),
-                          system.fe(),
-                          at_vertices,
-                          update_values | update_gradients |
-                              update_quadrature_points);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<1, 3>>        u(8);
-    std::vector<Tensor<2, 3>>        grad_u(8);
-    std::vector<double>              quads; // 4 x (x, y, z, e_max)
-    for (const auto &cell : system.dof_handler().active_cell_iterators())
+    /// The deformed surface of @p system but @p hidden_boundaries as quads
+    /// of 4 x (x, y, z (mm), e_max), gathered on rank 0.
+    std::vector<std::vector<double>>
+    surface_quads(const SolidSystem<3>            &system,
+                  const std::vector<unsigned int> &hidden_boundaries)
     {
-      if (!cell->is_locally_owned() || !cell->at_boundary())
-        continue;
-      bool reinitialised = false;
-      for (const unsigned int f : cell->face_indices())
+      // The 8 vertices of the unit cell as quadrature points.
+      std::vector<Point<3>> vertices;
+      for (const unsigned int v : GeometryInfo<3>::vertex_indices())
+        vertices.push_back(GeometryInfo<3>::unit_cell_vertex(v));
+      FEValues<3>                      fe_values(system.mapping(),
+                            system.fe(),
+                            Quadrature<3>(vertices),
+                            update_values | update_gradients |
+                                update_quadrature_points);
+      const FEValuesExtractors::Vector displacement(0);
+      const auto                      &solution = system.ghosted_solution();
+      std::vector<Tensor<1, 3>>        u(8);
+      std::vector<Tensor<2, 3>>        grad_u(8);
+      std::vector<double>              quads;
+      const auto                       shown = [&](const auto &face)
       {
-        if (!cell->face(f)->at_boundary())
+        return face->at_boundary() &&
+               std::find(hidden_boundaries.begin(),
+                         hidden_boundaries.end(),
+                         face->boundary_id()) == hidden_boundaries.end();
+      };
+      for (const auto &cell : system.dof_handler().active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() || !cell->at_boundary())
           continue;
-        const unsigned int id = cell->face(f)->boundary_id();
-        if (std::find(hidden_boundaries.begin(), hidden_boundaries.end(), id) !=
-            hidden_boundaries.end())
-          continue;
-        if (!reinitialised)
-        {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_values(system.ghosted_solution(),
-                                                      u);
-          fe_values[displacement].get_function_gradients(
-              system.ghosted_solution(), grad_u);
-          reinitialised = true;
-        }
-        for (unsigned int v = 0; v < 4; ++v)
-        {
-          const unsigned int q = GeometryInfo<3>::face_to_cell_vertices(f, v);
-          const Point<3>     x = fe_values.quadrature_point(q) + u[q];
-          const auto         e =
-              PrincipalStrains::compute(unit_symmetric_tensor<3>() + grad_u[q]);
-          quads.insert(quads.end(),
-                       {1e3 * x[0], 1e3 * x[1], 1e3 * x[2], e.e_max()});
-        }
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_values(solution, u);
+        fe_values[displacement].get_function_gradients(solution, grad_u);
+        for (const unsigned int f : cell->face_indices())
+          if (shown(cell->face(f)))
+            for (unsigned int v = 0; v < 4; ++v)
+            {
+              const unsigned int q =
+                  GeometryInfo<3>::face_to_cell_vertices(f, v);
+              const Point<3> x = fe_values.quadrature_point(q) + u[q];
+              const auto     e = PrincipalStrains::compute(
+                  unit_symmetric_tensor<3>() + grad_u[q]);
+              quads.insert(quads.end(),
+                           {1e3 * x[0], 1e3 * x[1], 1e3 * x[2], e.e_max()});
+            }
       }
+      return Utilities::MPI::gather(system.communicator(), quads, 0);
     }
-    const auto all = Utilities::MPI::gather(system.communicator(), quads, 0);
-    if (Utilities::MPI::this_mpi_process(system.communicator()) != 0)
-      return;
 
-    double e_top = 0;
+    /// The quads as gnuplot pm3d data; returns the largest e_max.
+    double write_surface(const std::vector<std::vector<double>> &all,
+                         const std::string                      &file)
     {
-      std::ofstream out(directory + "/" + base + "_surface.dat");
+      double             e_top = 0;
+      std::ostringstream out;
       out << "# deformed surface: x y z (mm) e_max (1); one quad per block\n";
       for (const auto &part : all)
         for (std::size_t i = 0; i + 16 <= part.size(); i += 16)
@@ -89,11 +86,17 @@ namespace softgrasp
           }
           out << "\n\n";
         }
+      AtomicFile::write(file, out.str());
+      return e_top;
     }
+
+    /// Every geom's wire frame at its pose at @p time (mm).
+    void write_geoms(const KinematicsData &kinematics,
+                     const double          time,
+                     const std::string    &file)
     {
-      std::ofstream out(directory + "/" + base + "_geoms.dat");
+      std::ostringstream out;
       out << "# link geoms at t = " << time << " s: x y z (mm)\n";
-      // every geom's wire frame at its pose at the time
       const RigidBodySet bodies = rigid_bodies_from(kinematics);
       for (const auto &body : bodies.bodies())
         for (unsigned int g = 0; g < body.geoms().size(); ++g)
@@ -110,7 +113,24 @@ namespace softgrasp
             out << "\n\n";
           }
         }
+      AtomicFile::write(file, out.str());
     }
+  } // namespace
+
+  void write_grasp_picture(const SolidSystem<3>            &system,
+                           const KinematicsData            &kinematics,
+                           const double                     time,
+                           const std::vector<unsigned int> &hidden_boundaries,
+                           const std::string               &directory,
+                           const std::string               &base,
+                           std::ostream                    &log)
+  {
+    const auto all = surface_quads(system, hidden_boundaries);
+    if (Utilities::MPI::this_mpi_process(system.communicator()) != 0)
+      return;
+    const double e_top =
+        write_surface(all, directory + "/" + base + "_surface.dat");
+    write_geoms(kinematics, time, directory + "/" + base + "_geoms.dat");
     {
       std::ofstream gp(directory + "/" + base + "_picture.gnuplot");
       gp << "set terminal pngcairo size 1100,900 noenhanced\n"

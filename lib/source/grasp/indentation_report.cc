@@ -51,11 +51,33 @@ namespace softgrasp
     return check;
   }
 
-  void IndentationStudy::write_link_table(const Simulation<3>  &solver,
-                                          const KinematicsData &cut)
+  namespace
   {
-    const double duration = cut.time.back() - cut.time.front();
-    // Links: those that touch in either model.
+    /// MuJoCo's normal (or tangential) force on link @p h at time @p t,
+    /// interpolated between the samples of @p cut (N).
+    double rigid_force_at(const KinematicsData              &cut,
+                          const KinematicsData::LinkHistory &h,
+                          const double                       t,
+                          const bool                         normal)
+    {
+      const auto value = [&](const std::size_t i)
+      {
+        return normal ? h.normal_force[i].norm()
+                      : (h.force[i] - h.normal_force[i]).norm();
+      };
+      std::size_t i = 0;
+      while (i + 2 < cut.time.size() && cut.time[i + 1] < t)
+        ++i;
+      const double w = std::clamp(
+          (t - cut.time[i]) / (cut.time[i + 1] - cut.time[i]), 0.0, 1.0);
+      return (1 - w) * value(i) + w * value(i + 1);
+    }
+  } // namespace
+
+  std::pair<std::vector<const LinkForceHistory *>,
+            std::vector<const KinematicsData::LinkHistory *>>
+  IndentationStudy::touching_links(const KinematicsData &cut)
+  {
     result.links.clear();
     std::vector<const LinkForceHistory *>            fe;
     std::vector<const KinematicsData::LinkHistory *> rigid;
@@ -78,6 +100,32 @@ namespace softgrasp
         rigid.push_back(&h);
       }
     }
+    return {fe, rigid};
+  }
+
+  void IndentationStudy::print_links() const
+  {
+    std::cout << "\nIndentation: closure " << result.closure << " of "
+              << extra_angle << " rad in " << result.steps << " steps"
+              << (result.target_met ? " (target normal force reached)" : "")
+              << ".\nForces on the links (N), finite elements | MuJoCo at "
+                 "the same closure:\n";
+    for (std::size_t l = 0; l < result.links.size(); ++l)
+      std::cout << "  " << std::setw(40) << std::left << result.links[l]
+                << std::right << " normal " << std::setw(9)
+                << result.normal_fe[l] << " | " << std::setw(9)
+                << result.normal_rigid[l] << '\n';
+    std::cout << "Force balance on the body: |sum of link forces - support "
+                 "reaction| = "
+              << result.balance << " x the largest link force.\n"
+              << "Deepest penetration: " << result.penetration << " m.\n";
+  }
+
+  void IndentationStudy::write_link_table(const Simulation<3>  &solver,
+                                          const KinematicsData &cut)
+  {
+    const double duration            = cut.time.back() - cut.time.front();
+    const auto [fe, rigid]           = touching_links(cut);
     std::vector<std::string> columns = {"step", "time", "closure"};
     for (const auto &l : result.links)
       for (const char *part : {"FE_normal",
@@ -91,23 +139,6 @@ namespace softgrasp
         HistoryWriter(output.directory + "/" + output.base_name + "_links.csv");
     table.set_columns(columns);
 
-    // MuJoCo's forces at time t, interpolated between the samples.
-    const auto rigid_at = [&cut](const KinematicsData::LinkHistory &h,
-                                 const double                       t,
-                                 const bool                         normal)
-    {
-      const auto value = [&](const std::size_t i)
-      {
-        return normal ? h.normal_force[i].norm()
-                      : (h.force[i] - h.normal_force[i]).norm();
-      };
-      std::size_t i = 0;
-      while (i + 2 < cut.time.size() && cut.time[i + 1] < t)
-        ++i;
-      const double w = std::clamp(
-          (t - cut.time[i]) / (cut.time[i + 1] - cut.time[i]), 0.0, 1.0);
-      return (1 - w) * value(i) + w * value(i + 1);
-    };
     result.normal_fe.assign(result.links.size(), 0);
     result.normal_rigid.assign(result.links.size(), 0);
     const auto &records = solver.contact_force_history();
@@ -120,33 +151,20 @@ namespace softgrasp
       for (std::size_t l = 0; l < result.links.size(); ++l)
       {
         result.normal_fe[l]    = fe[l]->normal[row];
-        result.normal_rigid[l] = rigid_at(*rigid[l], t, true);
+        result.normal_rigid[l] = rigid_force_at(cut, *rigid[l], t, true);
         values.insert(values.end(),
                       {result.normal_fe[l],
                        fe[l]->lateral[row],
                        fe[l]->friction[row],
                        result.normal_rigid[l],
-                       rigid_at(*rigid[l], t, false)});
+                       rigid_force_at(cut, *rigid[l], t, false)});
       }
       table.add_row(values);
     }
     if (Utilities::MPI::this_mpi_process(comm) == 0)
     {
       table.write();
-      std::cout << "\nIndentation: closure " << result.closure << " of "
-                << extra_angle << " rad in " << result.steps << " steps"
-                << (result.target_met ? " (target normal force reached)" : "")
-                << ".\nForces on the links (N), finite elements | MuJoCo at "
-                   "the same closure:\n";
-      for (std::size_t l = 0; l < result.links.size(); ++l)
-        std::cout << "  " << std::setw(40) << std::left << result.links[l]
-                  << std::right << " normal " << std::setw(9)
-                  << result.normal_fe[l] << " | " << std::setw(9)
-                  << result.normal_rigid[l] << '\n';
-      std::cout << "Force balance on the body: |sum of link forces - support "
-                   "reaction| = "
-                << result.balance << " x the largest link force.\n"
-                << "Deepest penetration: " << result.penetration << " m.\n";
+      print_links();
     }
     if (parameters.pictures)
     {

@@ -346,35 +346,36 @@ namespace softgrasp
 
   void write_grip_level(const FeGripLevel &level, const std::string &filename)
   {
-    Hdf5Record::write(
-        filename,
-        [&](HDF5::File &file)
-        {
-          file.set_attribute("schema", std::string("softgrasp grip level"));
-          file.set_attribute("settings", level.settings);
-          file.set_attribute("target_force", level.target_force);
-          file.set_attribute("reached_force", level.reached_force);
-          file.set_attribute("time", level.time);
-          file.set_attribute("reached", int(level.reached));
-          file.set_attribute("pulled", int(level.pulled));
-          // HDF5 refuses empty strings: a failure is stored with a prefix
-          file.set_attribute("failure", "failure: " + level.failure);
-          file.set_attribute("balance", level.balance);
-          file.set_attribute("penetration", level.penetration);
-          file.set_attribute("links", int(level.links.size()));
-          for (std::size_t i = 0; i < level.links.size(); ++i)
-          {
-            const auto &link  = level.links[i];
-            auto        group = file.create_group("link_" + std::to_string(i));
-            group.set_attribute("name", link.link);
-            std::vector<double> force;
-            for (const auto &f : link.force)
-              force.insert(force.end(), {f[0], f[1], f[2]});
-            Hdf5Record::write_vector(group, "force", force);
-            for (const auto &[name, values] : series(link))
-              Hdf5Record::write_vector(group, name, *values);
-          }
-        });
+    Hdf5Record::write(filename,
+                      [&](Hdf5Record::Group &file)
+                      {
+                        file.attribute("schema",
+                                       std::string("softgrasp grip level"));
+                        file.attribute("settings", level.settings);
+                        file.attribute("target_force", level.target_force);
+                        file.attribute("reached_force", level.reached_force);
+                        file.attribute("time", level.time);
+                        file.attribute("reached", int(level.reached));
+                        file.attribute("pulled", int(level.pulled));
+                        // HDF5 refuses empty strings: a failure is stored with
+                        // a prefix
+                        file.attribute("failure", "failure: " + level.failure);
+                        file.attribute("balance", level.balance);
+                        file.attribute("penetration", level.penetration);
+                        file.attribute("links", int(level.links.size()));
+                        for (std::size_t i = 0; i < level.links.size(); ++i)
+                        {
+                          const auto &link = level.links[i];
+                          auto group = file.group("link_" + std::to_string(i));
+                          group.attribute("name", link.link);
+                          std::vector<double> force;
+                          for (const auto &f : link.force)
+                            force.insert(force.end(), {f[0], f[1], f[2]});
+                          group.vector("force", force);
+                          for (const auto &[name, values] : series(link))
+                            group.vector(name, *values);
+                        }
+                      });
   }
 
   FeGripLevel read_grip_level(const std::string &filename)

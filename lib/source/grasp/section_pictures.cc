@@ -135,22 +135,24 @@ namespace softgrasp
     }
   } // namespace
 
-  void write_section_pictures(
-      const SectionView                               &view,
-      const std::map<types::material_id, std::string> &tissue_names,
-      const std::string                               &directory,
-      const std::string                               &base,
-      std::ostream                                    &log)
+  namespace
   {
-    const std::string stem     = base + "_" + view.name;
-    const auto       &s        = view.section;
-    const auto        in_plane = [&](const Point<3> &x)
+    /// (u, v) of @p x in the plane of @p view (m).
+    std::pair<double, double> in_plane(const SectionView &view,
+                                       const Point<3>    &x)
     {
-      return std::pair<double, double>((x - s.origin) * view.e1,
-                                       (x - s.origin) * view.e2);
-    };
-    double e_top = 1e-6;
+      return {(x - view.section.origin) * view.e1,
+              (x - view.section.origin) * view.e2};
+    }
+
+    /// Writes every number of the section (polygons, skin outline, link
+    /// outlines) as CSV and gnuplot data; returns the largest e_max.
+    double write_section_data(const SectionView &view,
+                              const std::string &directory,
+                              const std::string &stem)
     {
+      const auto        &s     = view.section;
+      double             e_top = 1e-6;
       std::ostringstream csv;
       csv << std::setprecision(9)
           << "polygon,corner,material_id,e_max,X,Y,Z,x,y,z\n";
@@ -174,8 +176,8 @@ namespace softgrasp
       for (std::size_t i = 0; i < s.outline.size(); ++i)
         for (unsigned int k = 0; k < 2; ++k)
         {
-          const auto [ub, vb] = in_plane(s.outline[i].reference[k]);
-          const auto [ua, va] = in_plane(s.outline[i].deformed[k]);
+          const auto [ub, vb] = in_plane(view, s.outline[i].reference[k]);
+          const auto [ua, va] = in_plane(view, s.outline[i].deformed[k]);
           skin << i << ',' << k << ',' << ub << ',' << vb << ',' << ua << ','
                << va << '\n';
           dat << 1000 * ub << ' ' << 1000 * vb << ' ' << 1000 * ua << ' '
@@ -189,109 +191,154 @@ namespace softgrasp
       write_links(directory + "/" + stem + "_links_indented.dat",
                   view,
                   view.links_indented);
+      return e_top;
     }
 
-    // Extent of the drawing (mm).
-    double lo_u = 1e300, hi_u = -1e300, lo_v = 1e300, hi_v = -1e300;
-    for (const auto &p : s.polygons)
-      for (const auto *corners : {&p.reference, &p.deformed})
-        for (const auto &x : *corners)
-        {
-          const auto [u, v] = in_plane(x);
-          lo_u = std::min(lo_u, 1000 * u), hi_u = std::max(hi_u, 1000 * u);
-          lo_v = std::min(lo_v, 1000 * v), hi_v = std::max(hi_v, 1000 * v);
-        }
-    if (s.polygons.empty())
-      lo_u = lo_v = -1, hi_u = hi_v = 1;
-    const double       pad = 0.05 * std::max(hi_u - lo_u, hi_v - lo_v) + 5;
-    std::ostringstream range;
-    range << "set xrange [" << lo_u - pad << ":" << hi_u + pad << "]\n"
-          << "set yrange [" << lo_v - pad << ":" << hi_v + pad << "]\n";
-
-    std::vector<types::material_id> ids;
-    for (const auto &p : s.polygons)
-      if (std::find(ids.begin(), ids.end(), p.material) == ids.end())
-        ids.push_back(p.material);
-    std::sort(ids.begin(), ids.end());
-    const auto tissue_colour = [&](const Section::Polygon &p)
+    /// gnuplot's x and y ranges (mm) around the section, before and after.
+    std::string drawing_range(const SectionView &view)
     {
-      const auto i =
-          std::find(ids.begin(), ids.end(), p.material) - ids.begin();
-      return tissue_colours[i % tissue_colours.size()];
-    };
-    const auto name_of = [&](const types::material_id id)
-    {
-      const auto it = tissue_names.find(id);
-      return it == tissue_names.end() ? "material " + std::to_string(id)
-                                      : it->second;
-    };
-
-    std::ofstream gp(directory + "/" + stem + "_section.gnuplot");
-    gp << "set terminal pngcairo size 1800,640 noenhanced\n"
-       << "set output '" << AtomicFile::temporary_name(stem + "_section.png")
-       << "'\n"
-       << "set multiplot layout 1,3 title '" << quoted(view.title) << "'\n"
-       << "set size ratio -1\n"
-       << range.str() << "set xlabel 'in-plane u (mm)'\n"
-       << "set ylabel 'in-plane v (mm)'\nset key outside bottom center\n";
-    const std::string links_eq = stem + "_links_equilibrium.dat";
-    const std::string links_in = stem + "_links_indented.dat";
-    unsigned int      object   = 0;
-    // Panel 1 and 2: tissues, before and after.
-    for (const bool deformed : {false, true})
-    {
-      gp << "unset object\nunset colorbox\n";
-      draw_polygons(gp, view, deformed, tissue_colour, object);
-      gp << "set title '"
-         << (deformed ? "indented state: tissues"
-                      : "equilibrium state: "
-                        "tissues")
-         << "'\nplot ";
-      for (std::size_t i = 0; i < ids.size(); ++i)
-        gp << "NaN with boxes fs solid fc rgb '"
-           << tissue_colours[i % tissue_colours.size()] << "' title '"
-           << quoted(name_of(ids[i])) << "', ";
-      gp << "'" << (deformed ? links_in : links_eq)
-         << "' using 1:2 with filledcurves closed fc rgb '#303030' "
-            "title 'finger links'\n";
+      double lo_u = 1e300, hi_u = -1e300, lo_v = 1e300, hi_v = -1e300;
+      for (const auto &p : view.section.polygons)
+        for (const auto *corners : {&p.reference, &p.deformed})
+          for (const auto &x : *corners)
+          {
+            const auto [u, v] = in_plane(view, x);
+            lo_u = std::min(lo_u, 1000 * u), hi_u = std::max(hi_u, 1000 * u);
+            lo_v = std::min(lo_v, 1000 * v), hi_v = std::max(hi_v, 1000 * v);
+          }
+      if (view.section.polygons.empty())
+        lo_u = lo_v = -1, hi_u = hi_v = 1;
+      const double       pad = 0.05 * std::max(hi_u - lo_u, hi_v - lo_v) + 5;
+      std::ostringstream range;
+      range << "set xrange [" << lo_u - pad << ":" << hi_u + pad << "]\n"
+            << "set yrange [" << lo_v - pad << ":" << hi_v + pad << "]\n";
+      return range.str();
     }
-    // Panel 3: e_max after.
-    gp << "unset object\n";
-    draw_polygons(
-        gp,
-        view,
-        true,
-        [&](const Section::Polygon &p) { return colour(p.e_max / e_top); },
-        object);
-    gp << "set title 'indented state: e_max (largest principal strain)'\n"
-       << "set palette defined (";
-    for (std::size_t k = 0; k < stops.size(); ++k)
-      gp << (k ? ", " : "") << stops[k].first << " '" << colour(stops[k].first)
-         << "'";
-    gp << ")\nset cbrange [0:" << e_top << "]\nset cblabel 'e_max'\n"
-       << "set colorbox\nplot '" << links_in
-       << "' using 1:2 with filledcurves closed fc rgb '#303030' "
-          "title 'finger links', '' using 1:2:(0) with points pt -1 lc "
-          "palette notitle\nunset multiplot\n";
-    gp.close();
 
-    std::ofstream skin(directory + "/" + stem + "_skin.gnuplot");
-    skin << "set terminal pngcairo size 900,800 noenhanced\n"
-         << "set output '" << AtomicFile::temporary_name(stem + "_skin.png")
-         << "'\nset title 'Skin outline before and after the "
-            "indentation; "
-         << quoted(view.title) << "' font ',10'\n"
+    /// The tissues in a section: their colours and legend names.
+    struct TissueLegend
+    {
+      TissueLegend(const SectionView                               &view,
+                   const std::map<types::material_id, std::string> &names)
+          : names(names)
+      {
+        for (const auto &p : view.section.polygons)
+          if (std::find(ids.begin(), ids.end(), p.material) == ids.end())
+            ids.push_back(p.material);
+        std::sort(ids.begin(), ids.end());
+      }
+
+      std::string colour(const types::material_id id) const
+      {
+        const auto i = std::find(ids.begin(), ids.end(), id) - ids.begin();
+        return tissue_colours[i % tissue_colours.size()];
+      }
+
+      std::string name(const types::material_id id) const
+      {
+        const auto it = names.find(id);
+        return it == names.end() ? "material " + std::to_string(id)
+                                 : it->second;
+      }
+
+      std::vector<types::material_id>                  ids;
+      const std::map<types::material_id, std::string> &names;
+    };
+
+    /// The three panels: tissues before and after, e_max after.
+    void write_section_script(const SectionView  &view,
+                              const TissueLegend &legend,
+                              const double        e_top,
+                              const std::string  &directory,
+                              const std::string  &stem)
+    {
+      std::ofstream gp(directory + "/" + stem + "_section.gnuplot");
+      gp << "set terminal pngcairo size 1800,640 noenhanced\n"
+         << "set output '" << AtomicFile::temporary_name(stem + "_section.png")
+         << "'\n"
+         << "set multiplot layout 1,3 title '" << quoted(view.title) << "'\n"
          << "set size ratio -1\n"
-         << range.str() << "set xlabel 'in-plane u (mm)'\n"
-         << "set ylabel 'in-plane v (mm)'\nset key bottom right\n"
-         << "plot '" << stem
-         << "_skin.dat' using 1:2 with lines lw 2 lc rgb '#1f77b4' title "
-            "'equilibrium state', '' using 3:4 with lines lw 2 lc rgb "
-            "'#d62728' title 'indented state', '"
-         << links_in
-         << "' using 1:2 with lines lc rgb '#303030' title 'finger links "
-            "(indented)'\n";
-    skin.close();
+         << drawing_range(view) << "set xlabel 'in-plane u (mm)'\n"
+         << "set ylabel 'in-plane v (mm)'\nset key outside bottom center\n";
+      const std::string links_eq = stem + "_links_equilibrium.dat";
+      const std::string links_in = stem + "_links_indented.dat";
+      unsigned int      object   = 0;
+      for (const bool deformed : {false, true})
+      {
+        gp << "unset object\nunset colorbox\n";
+        draw_polygons(
+            gp,
+            view,
+            deformed,
+            [&](const Section::Polygon &p)
+            { return legend.colour(p.material); },
+            object);
+        gp << "set title '"
+           << (deformed ? "indented state: tissues"
+                        : "equilibrium state: tissues")
+           << "'\nplot ";
+        for (const auto id : legend.ids)
+          gp << "NaN with boxes fs solid fc rgb '" << legend.colour(id)
+             << "' title '" << quoted(legend.name(id)) << "', ";
+        gp << "'" << (deformed ? links_in : links_eq)
+           << "' using 1:2 with filledcurves closed fc rgb '#303030' "
+              "title 'finger links'\n";
+      }
+      gp << "unset object\n";
+      draw_polygons(
+          gp,
+          view,
+          true,
+          [&](const Section::Polygon &p) { return colour(p.e_max / e_top); },
+          object);
+      gp << "set title 'indented state: e_max (largest principal strain)'\n"
+         << "set palette defined (";
+      for (std::size_t k = 0; k < stops.size(); ++k)
+        gp << (k ? ", " : "") << stops[k].first << " '"
+           << colour(stops[k].first) << "'";
+      gp << ")\nset cbrange [0:" << e_top << "]\nset cblabel 'e_max'\n"
+         << "set colorbox\nplot '" << links_in
+         << "' using 1:2 with filledcurves closed fc rgb '#303030' "
+            "title 'finger links', '' using 1:2:(0) with points pt -1 lc "
+            "palette notitle\nunset multiplot\n";
+    }
+
+    /// The skin outline before and after, with the indented links.
+    void write_skin_script(const SectionView &view,
+                           const std::string &directory,
+                           const std::string &stem)
+    {
+      std::ofstream skin(directory + "/" + stem + "_skin.gnuplot");
+      skin << "set terminal pngcairo size 900,800 noenhanced\n"
+           << "set output '" << AtomicFile::temporary_name(stem + "_skin.png")
+           << "'\nset title 'Skin outline before and after the "
+              "indentation; "
+           << quoted(view.title) << "' font ',10'\n"
+           << "set size ratio -1\n"
+           << drawing_range(view) << "set xlabel 'in-plane u (mm)'\n"
+           << "set ylabel 'in-plane v (mm)'\nset key bottom right\n"
+           << "plot '" << stem
+           << "_skin.dat' using 1:2 with lines lw 2 lc rgb '#1f77b4' title "
+              "'equilibrium state', '' using 3:4 with lines lw 2 lc rgb "
+              "'#d62728' title 'indented state', '"
+           << stem << "_links_indented.dat"
+           << "' using 1:2 with lines lc rgb '#303030' title 'finger links "
+              "(indented)'\n";
+    }
+  } // namespace
+
+  void write_section_pictures(
+      const SectionView                               &view,
+      const std::map<types::material_id, std::string> &tissue_names,
+      const std::string                               &directory,
+      const std::string                               &base,
+      std::ostream                                    &log)
+  {
+    const std::string stem  = base + "_" + view.name;
+    const double      e_top = write_section_data(view, directory, stem);
+    write_section_script(
+        view, TissueLegend(view, tissue_names), e_top, directory, stem);
+    write_skin_script(view, directory, stem);
     if (run_gnuplot(directory,
                     stem + "_section.gnuplot",
                     {stem + "_section.png"},

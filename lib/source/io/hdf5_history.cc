@@ -1,6 +1,6 @@
-#include <deal.II/base/hdf5.h>
-#include <deal.II/lac/full_matrix.h>
+#include <deal.II/base/utilities.h>
 #include <map>
+#include <optional>
 #include <softgrasp/io/hdf5_history.h>
 #include <softgrasp/io/hdf5_record.h>
 
@@ -53,56 +53,21 @@ namespace softgrasp
 
     Hdf5Record::write(
         filename,
-        [&](HDF5::File &file)
+        [&](Hdf5Record::Group &file)
         {
-          file.set_attribute("schema", schema);
-          std::map<std::string, HDF5::Group> groups;
-          const auto group_of = [&](const std::string &path) -> HDF5::Group &
-          {
-            auto it = groups.find(path);
-            if (it != groups.end())
-              return it->second;
-            // create the nested groups of "a/b" one level at a time
-            HDF5::Group *parent = &file;
-            std::string  so_far;
-            for (const auto &part : Utilities::split_string_list(path, '/'))
-            {
-              so_far += (so_far.empty() ? "" : "/") + part;
-              auto found = groups.find(so_far);
-              if (found == groups.end())
-                found =
-                    groups.emplace(so_far, parent->create_group(part)).first;
-              parent = &found->second;
-            }
-            return *parent;
-          };
+          file.attribute("schema", schema);
           const unsigned int steps = table.rows.size();
           for (const auto &[key, columns] : datasets)
           {
-            HDF5::Group &group = key.first.empty() ? file : group_of(key.first);
-            FullMatrix<double> values(steps, columns.size());
+            std::vector<double> values;
             for (unsigned int r = 0; r < steps; ++r)
-              for (unsigned int k = 0; k < columns.size(); ++k)
-                values(r, k) = table.rows[r][columns[k]];
-            if (columns.size() == 1)
-            {
-              std::vector<double> column(steps);
-              for (unsigned int r = 0; r < steps; ++r)
-                column[r] = values(r, 0);
-              auto dataset = group.create_dataset<double>(key.second, {steps});
-              if (steps > 0)
-                dataset.write(column);
-              dataset.set_attribute("unit", unit_of(key.second, dim));
-            }
-            else
-            {
-              auto dataset = group.create_dataset<double>(
-                  key.second,
-                  {steps, static_cast<unsigned int>(columns.size())});
-              if (steps > 0)
-                dataset.write(values);
-              dataset.set_attribute("unit", unit_of(key.second, dim));
-            }
+              for (const unsigned int c : columns)
+                values.push_back(table.rows[r][c]);
+            auto group = key.first.empty() ? std::optional<Hdf5Record::Group>()
+                                           : file.group(key.first);
+            (group ? *group : file)
+                .dataset(key.second, values, steps, columns.size())
+                .attribute("unit", unit_of(key.second, dim));
           }
         });
   }

@@ -310,19 +310,8 @@ namespace softgrasp
     spatial_gradients(u, scratch);
 
     const bool mixed = formulation == Formulation::mixed_upJ;
-    if (mixed && given != nullptr)
-      scratch.dilatation.reinit(fe_values.get_quadrature_points(),
-                                scratch.JxW,
-                                scratch.J,
-                                material.volumetric_energy(),
-                                *given);
-    else if (mixed)
-      scratch.dilatation.reinit(fe_values.get_quadrature_points(),
-                                scratch.JxW,
-                                scratch.J,
-                                material.volumetric_energy());
     if (mixed)
-      scratch.dilatation.get_coefficients(copy.coefficients);
+      start_dilatation(material, given, scratch, copy);
 
     const bool         gravity = boundary_conditions.has_gravity();
     Material::Response response;
@@ -504,6 +493,67 @@ namespace softgrasp
   }
 
   template <int dim>
+  void CellAssembler<dim>::start_dilatation(const Material &material,
+                                            const DilatationCoefficients *given,
+                                            AssemblyScratchData<dim> &scratch,
+                                            AssemblyCopyData &copy) const
+  {
+    const auto &points = scratch.fe_values.get_quadrature_points();
+    if (given != nullptr)
+      scratch.dilatation.reinit(
+          points, scratch.JxW, scratch.J, material.volumetric_energy(), *given);
+    else
+      scratch.dilatation.reinit(
+          points, scratch.JxW, scratch.J, material.volumetric_energy());
+    scratch.dilatation.get_coefficients(copy.coefficients);
+  }
+
+  template <int dim>
+  void CellAssembler<dim>::add_pressure(const Function<dim> &pressure,
+                                        const TrilinosWrappers::MPI::Vector &u,
+                                        const bool                with_matrix,
+                                        AssemblyScratchData<dim> &scratch,
+                                        AssemblyCopyData         &copy) const
+  {
+    FEFaceValues<dim>          &fe_face = scratch.fe_face_values;
+    const FiniteElement<dim>   &fe      = fe_face.get_fe();
+    const unsigned int          n       = fe.n_dofs_per_cell();
+    std::vector<Tensor<2, dim>> grad_u(fe_face.n_quadrature_points);
+    fe_face[displacement].get_function_gradients(u, grad_u);
+    for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+    {
+      const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + grad_u[q];
+      const double         J = determinant(F);
+      if (!(J > 0))
+        throw InvertedMaterialState(J);
+      const Tensor<2, dim> F_inv = invert(F);
+      const Tensor<1, dim> FinvT_N =
+          transpose(F_inv) * fe_face.normal_vector(q);
+      const double p   = pressure.value(fe_face.quadrature_point(q));
+      const double JxW = fe_face.JxW(q);
+      for (unsigned int k = 0; k < n; ++k)
+      {
+        const unsigned int c = fe.system_to_component_index(k).first;
+        copy.external[k] -=
+            fe_face.shape_value(k, q) * p * J * FinvT_N[c] * JxW;
+      }
+      if (!with_matrix)
+        continue;
+      for (unsigned int l = 0; l < n; ++l)
+      {
+        const Tensor<2, dim> g = fe_face[displacement].gradient(l, q) * F_inv;
+        const Tensor<1, dim> dforce =
+            p * J * (trace(g) * FinvT_N - transpose(g) * FinvT_N);
+        for (unsigned int k = 0; k < n; ++k)
+        {
+          const unsigned int c = fe.system_to_component_index(k).first;
+          copy.matrix(k, l) += fe_face.shape_value(k, q) * dforce[c] * JxW;
+        }
+      }
+    }
+  }
+
+  template <int dim>
   void CellAssembler<dim>::assemble_boundary(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       const TrilinosWrappers::MPI::Vector                  &u,
@@ -547,41 +597,7 @@ namespace softgrasp
         if (pressure.boundary_id != id)
           continue;
         fe_face.reinit(cell, f);
-        std::vector<Tensor<2, dim>> grad_u(fe_face.n_quadrature_points);
-        fe_face[displacement].get_function_gradients(u, grad_u);
-        for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
-        {
-          const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + grad_u[q];
-          const double         J = determinant(F);
-          if (!(J > 0))
-            throw InvertedMaterialState(J);
-          const Tensor<2, dim> F_inv = invert(F);
-          const Tensor<1, dim> FinvT_N =
-              transpose(F_inv) * fe_face.normal_vector(q);
-          const double p =
-              pressure.pressure->value(fe_face.quadrature_point(q));
-          const double JxW = fe_face.JxW(q);
-          for (unsigned int k = 0; k < n; ++k)
-          {
-            const unsigned int c = fe.system_to_component_index(k).first;
-            copy.external[k] -=
-                fe_face.shape_value(k, q) * p * J * FinvT_N[c] * JxW;
-          }
-          if (!with_matrix)
-            continue;
-          for (unsigned int l = 0; l < n; ++l)
-          {
-            const Tensor<2, dim> g =
-                fe_face[displacement].gradient(l, q) * F_inv;
-            const Tensor<1, dim> dforce =
-                p * J * (trace(g) * FinvT_N - transpose(g) * FinvT_N);
-            for (unsigned int k = 0; k < n; ++k)
-            {
-              const unsigned int c = fe.system_to_component_index(k).first;
-              copy.matrix(k, l) += fe_face.shape_value(k, q) * dforce[c] * JxW;
-            }
-          }
-        }
+        add_pressure(*pressure.pressure, u, with_matrix, scratch, copy);
       }
     }
   }

@@ -44,6 +44,84 @@ namespace softgrasp
     return result;
   }
 
+  namespace
+  {
+    /// Why the iterate @p state cannot go on ("" if it can).
+    template <typename AssemblyResult>
+    std::string failure_of(const AssemblyResult &state)
+    {
+      std::ostringstream why;
+      if (!state.ok)
+        why << "an element inverted (J = " << state.failed_J << ") in "
+            << state.failed_cell;
+      else if (!std::isfinite(state.residual_norm))
+        why << "the residual is NaN or Inf (a material or load evaluation "
+               "failed)";
+      return why.str();
+    }
+
+    /// Why the linear solve @p linear failed ("" if it converged).
+    std::string failure_of(const LinearSolver::Result &linear)
+    {
+      std::ostringstream why;
+      if (linear.converged)
+        return "";
+      if (!linear.breakdown.empty())
+        why << linear.breakdown;
+      else
+        why << "the linear solver did not converge in " << linear.iterations
+            << " iterations (residual " << linear.residual << ")";
+      return why.str();
+    }
+  } // namespace
+
+  template <int dim>
+  double NewtonSolver<dim>::line_search(
+      SolidSystem<dim>                          &system,
+      const TrilinosWrappers::MPI::Vector       &du,
+      const double                               u_scale,
+      double                                    &violation,
+      typename SolidSystem<dim>::AssemblyResult &state) const
+  {
+    // Line search on the energy slope s(alpha) = du . r(u + alpha du)
+    // (r = f_ext - f_int): the full step is taken when |s(1)| <= 0.8
+    // |s(0)|, otherwise alpha moves to the secant root of s; updates that
+    // invert an element are halved. Skipped while boundary values are
+    // being imposed (then r(u) is not the gradient along du) and with
+    // nodal conditions such as contact (then r is not an energy gradient;
+    // the semi-smooth Newton method takes full steps).
+    system.begin_update();
+    const double s0    = system.residual_dot(du);
+    const bool   jump  = violation > 1e-12 * u_scale;
+    double       alpha = 1.0;
+    for (unsigned int ls = 0;; ++ls)
+    {
+      system.apply_update(du, alpha);
+      violation = system.update_constraints();
+      state     = system.assemble(false);
+      if (!state.ok)
+      {
+        if (ls >= parameters.max_line_search_steps)
+          break;
+        alpha *= 0.5;
+        continue;
+      }
+      if (jump || !parameters.line_search || s0 <= 0 ||
+          system.has_nodal_conditions() ||
+          ls >= parameters.max_line_search_steps)
+        break;
+      const double s = system.residual_dot(du);
+      if (std::abs(s) <= 0.8 * std::abs(s0))
+        break;
+      const double root = (s0 - s) > 0 ? alpha * s0 / (s0 - s) : 0.5 * alpha;
+      const double next = std::min(1.0, std::max(0.1 * alpha, root));
+      if (std::abs(next - alpha) < 1e-3)
+        break;
+      alpha = next;
+    }
+    return alpha;
+  }
+
   template <int dim>
   typename NewtonSolver<dim>::Result
   NewtonSolver<dim>::iterate(SolidSystem<dim> &system) const
@@ -57,21 +135,11 @@ namespace softgrasp
 
     for (unsigned int it = 0;; ++it)
     {
-      if (!state.ok)
-      {
-        std::ostringstream why;
-        why << "an element inverted (J = " << state.failed_J << ") in "
-            << state.failed_cell;
-        result.failure = why.str();
+      if (state.ok)
+        result.residuals.push_back(state.residual_norm);
+      result.failure = failure_of(state);
+      if (!result.failure.empty())
         return result;
-      }
-      result.residuals.push_back(state.residual_norm);
-      if (!std::isfinite(state.residual_norm))
-      {
-        result.failure = "the residual is NaN or Inf (a material or load "
-                         "evaluation failed)";
-        return result;
-      }
       const double tolerance =
           std::max(parameters.relative_tolerance * state.force_scale,
                    parameters.absolute_tolerance);
@@ -116,56 +184,15 @@ namespace softgrasp
           system.solve(du, forcing_term(result.residuals, tolerance));
       result.linear_iterations += linear.iterations;
       log << ", " << linear.iterations << " linear its";
-      if (!linear.converged)
+      result.failure = failure_of(linear);
+      if (!result.failure.empty())
       {
         log << std::endl;
-        std::ostringstream why;
-        if (!linear.breakdown.empty())
-          why << linear.breakdown;
-        else
-          why << "the linear solver did not converge in " << linear.iterations
-              << " iterations (residual " << linear.residual << ")";
-        result.failure = why.str();
         return result;
       }
 
-      // Line search on the energy slope s(alpha) = du . r(u + alpha du)
-      // (r = f_ext - f_int): the full step is taken when |s(1)| <= 0.8
-      // |s(0)|, otherwise alpha moves to the secant root of s; updates that
-      // invert an element are halved. Skipped while boundary values are
-      // being imposed (then r(u) is not the gradient along du) and with
-      // nodal conditions such as contact (then r is not an energy gradient;
-      // the semi-smooth Newton method takes full steps).
-      system.begin_update();
-      const double s0    = system.residual_dot(du);
-      const bool   jump  = violation > 1e-12 * u_scale;
-      double       alpha = 1.0;
-      for (unsigned int ls = 0;; ++ls)
-      {
-        system.apply_update(du, alpha);
-        violation = system.update_constraints();
-        state     = system.assemble(false);
-        if (!state.ok)
-        {
-          if (ls >= parameters.max_line_search_steps)
-            break;
-          alpha *= 0.5;
-          continue;
-        }
-        if (jump || !parameters.line_search || s0 <= 0 ||
-            system.has_nodal_conditions() ||
-            ls >= parameters.max_line_search_steps)
-          break;
-        const double s = system.residual_dot(du);
-        if (std::abs(s) <= 0.8 * std::abs(s0))
-          break;
-        const double root = (s0 - s) > 0 ? alpha * s0 / (s0 - s) : 0.5 * alpha;
-        const double next = std::min(1.0, std::max(0.1 * alpha, root));
-        if (std::abs(next - alpha) < 1e-3)
-          break;
-        alpha = next;
-      }
-      last_increment = alpha * du.linfty_norm();
+      const double alpha = line_search(system, du, u_scale, violation, state);
+      last_increment     = alpha * du.linfty_norm();
       if (alpha < 1)
         log << ", line search alpha = " << alpha;
       log << std::endl;

@@ -219,13 +219,8 @@ namespace softgrasp
   }
 
   template <int dim>
-  typename SolidSystem<dim>::AssemblyResult
-  SolidSystem<dim>::assemble(const bool with_matrix)
+  void SolidSystem<dim>::start_assembly(const bool with_matrix)
   {
-    TimerOutput::Scope scope(timer, with_matrix ? "assembly" : "residual");
-    AssertThrow(!with_matrix || with_tangent,
-                ExcMessage("This SolidSystem was set up without a tangent "
-                           "matrix (set_tangent_needed(false))."));
     update_ghosts();
     if (with_matrix)
     {
@@ -242,6 +237,61 @@ namespace softgrasp
     residual = 0;
     f_int    = 0;
     f_ext    = 0;
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::compress_assembly(const bool with_matrix)
+  {
+    if (with_matrix)
+    {
+      tangent.compress(VectorOperation::add);
+      rhs.compress(VectorOperation::add);
+      if (split_volumetric)
+        volumetric.finalize();
+    }
+    residual.compress(VectorOperation::add);
+    f_int.compress(VectorOperation::add);
+    f_ext.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  bool SolidSystem<dim>::share_failure(AssemblyResult &result) const
+  {
+    const unsigned int none = std::numeric_limits<unsigned int>::max();
+    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator());
+    const unsigned int failing_rank =
+        Utilities::MPI::min(result.ok ? none : rank, communicator());
+    if (failing_rank == none)
+      return false;
+    result.ok          = false;
+    result.failed_cell = Utilities::MPI::broadcast(
+        communicator(), result.failed_cell, failing_rank);
+    result.failed_J = Utilities::MPI::broadcast(
+        communicator(), result.failed_J, failing_rank);
+    return true;
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::apply_nodal_conditions(const bool with_matrix)
+  {
+    if (nodal_conditions == nullptr)
+      return;
+    if (!with_matrix)
+      nodal_conditions->evaluate(*this);
+    else
+      nodal_conditions->add_node_terms(tangent_constraints, tangent, rhs);
+    nodal_conditions->apply_to_residual(residual);
+  }
+
+  template <int dim>
+  typename SolidSystem<dim>::AssemblyResult
+  SolidSystem<dim>::assemble(const bool with_matrix)
+  {
+    TimerOutput::Scope scope(timer, with_matrix ? "assembly" : "residual");
+    AssertThrow(!with_matrix || with_tangent,
+                ExcMessage("This SolidSystem was set up without a tangent "
+                           "matrix (set_tangent_needed(false))."));
+    start_assembly(with_matrix);
     AssemblyResult result;
 
     using Iterator   = typename DoFHandler<dim>::active_cell_iterator;
@@ -299,41 +349,12 @@ namespace softgrasp
                                  parameters.discretization.pressure_degree()),
         AssemblyCopyData());
 
-    if (with_matrix)
-    {
-      tangent.compress(VectorOperation::add);
-      rhs.compress(VectorOperation::add);
-      if (split_volumetric)
-        volumetric.finalize();
-    }
-    residual.compress(VectorOperation::add);
-    f_int.compress(VectorOperation::add);
-    f_ext.compress(VectorOperation::add);
-
-    // An inverted element anywhere fails the assembly on every rank.
-    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator());
-    const unsigned int failing_rank = Utilities::MPI::min(
-        result.ok ? std::numeric_limits<unsigned int>::max() : rank,
-        communicator());
-    if (failing_rank != std::numeric_limits<unsigned int>::max())
-    {
-      result.ok          = false;
-      result.failed_cell = Utilities::MPI::broadcast(
-          communicator(), result.failed_cell, failing_rank);
-      result.failed_J = Utilities::MPI::broadcast(
-          communicator(), result.failed_J, failing_rank);
+    compress_assembly(with_matrix);
+    if (share_failure(result))
       return result;
-    }
     if (recording)
       dilatation_state.set_recorded(true);
-    if (nodal_conditions != nullptr)
-    {
-      if (!with_matrix)
-        nodal_conditions->evaluate(*this);
-      else
-        nodal_conditions->add_node_terms(tangent_constraints, tangent, rhs);
-      nodal_conditions->apply_to_residual(residual);
-    }
+    apply_nodal_conditions(with_matrix);
     result.residual_norm = residual.l2_norm();
     result.force_scale   = std::max(f_int.l2_norm(), f_ext.l2_norm());
     return result;

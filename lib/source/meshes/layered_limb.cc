@@ -328,6 +328,11 @@ namespace softgrasp
       }
     triangulation.create_triangulation(vertices, hexes, SubCellData());
 
+    set_ids(triangulation);
+  }
+
+  void LayeredLimb::set_ids(Triangulation<3> &triangulation) const
+  {
     // Manifold ids: the core first, so that the limb chart wins on the
     // faces and edges the core shares with the muscle (the bone circle).
     for (const auto &cell : triangulation.active_cell_iterators())

@@ -317,75 +317,51 @@ namespace softgrasp
     return false;
   }
 
-  void GraspSimulation::close_to_equilibrium()
+  void GraspSimulation::close_joint(const std::size_t    k,
+                                    std::vector<bool>   &touched,
+                                    std::vector<double> &targets)
   {
-    const mjModel      *m  = mujoco.model();
-    mjData             *d  = mujoco.data();
-    const double        dt = m->opt.timestep;
-    std::vector<bool>   touched(finger_joints.size(), false);
-    std::vector<double> targets(finger_joints.size());
-    for (std::size_t k = 0; k < finger_joints.size(); ++k)
+    const mjModel *m  = mujoco.model();
+    mjData        *d  = mujoco.data();
+    const double   dt = m->opt.timestep;
+    const int      j  = finger_joints[k];
+    // A joint starts closing once its parent link's joint has touched
+    // (proximal before distal: the finger wraps around the object).
+    bool parent_closing = false;
+    for (std::size_t p = 0; p < finger_joints.size(); ++p)
+      parent_closing = parent_closing ||
+                       (!touched[p] && m->jnt_bodyid[finger_joints[p]] ==
+                                           m->body_parentid[m->jnt_bodyid[j]]);
+    if (parent_closing)
+      return;
+    if (touches_object(m->jnt_bodyid[j]))
     {
-      targets[k] = d->qpos[m->jnt_qposadr[finger_joints[k]]];
-      set_target(finger_joints[k], targets[k]);
+      touched[k] = true;
+      targets[k] = d->qpos[m->jnt_qposadr[j]] + parameters.grip;
+      log << "  t = " << std::setw(6) << d->time
+          << " s: " << mj_id2name(m, mjOBJ_JOINT, j) << " touches at "
+          << d->qpos[m->jnt_qposadr[j]] << " rad, target " << targets[k]
+          << " rad\n";
     }
-    log << "MuJoCo: closing the hand at " << parameters.closing_speed
-        << " rad/s, grip " << parameters.grip << " rad beyond first touch\n";
-    double next_sample = 0;
-    record(0, d);
-    while (std::find(touched.begin(), touched.end(), false) != touched.end())
+    else
     {
-      if (d->time > parameters.maximum_time)
-        throw InputError("The hand did not touch the object with every "
-                         "finger joint's link within 'Maximum time' (" +
-                         std::to_string(parameters.maximum_time) +
-                         " s). Fix: move the hand closer ('Base position') or "
-                         "raise the maximum time.");
-      for (std::size_t k = 0; k < finger_joints.size(); ++k)
-      {
-        if (touched[k])
-          continue;
-        const int j = finger_joints[k];
-        // A joint starts closing once its parent link's joint has touched
-        // (proximal before distal: the finger wraps around the object).
-        bool parent_closing = false;
-        for (std::size_t p = 0; p < finger_joints.size(); ++p)
-          parent_closing =
-              parent_closing ||
-              (!touched[p] && m->jnt_bodyid[finger_joints[p]] ==
-                                  m->body_parentid[m->jnt_bodyid[j]]);
-        if (parent_closing)
-          continue;
-        if (touches_object(m->jnt_bodyid[j]))
-        {
-          touched[k] = true;
-          targets[k] = d->qpos[m->jnt_qposadr[j]] + parameters.grip;
-          log << "  t = " << std::setw(6) << d->time
-              << " s: " << mj_id2name(m, mjOBJ_JOINT, j) << " touches at "
-              << d->qpos[m->jnt_qposadr[j]] << " rad, target " << targets[k]
-              << " rad\n";
-        }
-        else
-        {
-          targets[k] += parameters.closing_speed * dt;
-          const int a = finger_actuators[k];
-          if (m->actuator_ctrllimited[a] &&
-              targets[k] > m->actuator_ctrlrange[2 * a + 1])
-            throw InputError(
-                std::string("Joint '") + mj_id2name(m, mjOBJ_JOINT, j) +
-                "' reached the end of its ctrlrange without touching the "
-                "object. Fix: move the hand closer to the object ('Rigid "
-                "environment/Base position') or check the scene.");
-        }
-        set_target(j, targets[k]);
-      }
-      mj_step(m, d);
-      if (d->time >= next_sample)
-      {
-        record(d->time, d);
-        next_sample += parameters.sample_interval;
-      }
+      targets[k] += parameters.closing_speed * dt;
+      const int a = finger_actuators[k];
+      if (m->actuator_ctrllimited[a] &&
+          targets[k] > m->actuator_ctrlrange[2 * a + 1])
+        throw InputError(
+            std::string("Joint '") + mj_id2name(m, mjOBJ_JOINT, j) +
+            "' reached the end of its ctrlrange without touching the "
+            "object. Fix: move the hand closer to the object ('Rigid "
+            "environment/Base position') or check the scene.");
     }
+    set_target(j, targets[k]);
+  }
+
+  void GraspSimulation::hold_until_settled()
+  {
+    const mjModel *m = mujoco.model();
+    mjData        *d = mujoco.data();
     // Hold the targets and let the grasp settle, recording as it goes.
     const double max_time = parameters.maximum_time - d->time;
     bool         settled  = false;
@@ -410,6 +386,12 @@ namespace softgrasp
           "that every contact link can reach the object, or shorten 'Contact "
           "links'.");
     }
+  }
+
+  void GraspSimulation::record_equilibrium()
+  {
+    const mjModel *m      = mujoco.model();
+    mjData        *d      = mujoco.data();
     data.equilibrium_time = d->time;
     data.phases.push_back({"closing", 0, d->time, 0});
     equilibrium_qpos.assign(d->qpos, d->qpos + m->nq);
@@ -433,6 +415,43 @@ namespace softgrasp
             << forces[k].normal_force.norm() << " N, lateral " << std::setw(8)
             << forces[k].lateral_force().norm() << " N\n";
       }
+  }
+
+  void GraspSimulation::close_to_equilibrium()
+  {
+    const mjModel      *m = mujoco.model();
+    mjData             *d = mujoco.data();
+    std::vector<bool>   touched(finger_joints.size(), false);
+    std::vector<double> targets(finger_joints.size());
+    for (std::size_t k = 0; k < finger_joints.size(); ++k)
+    {
+      targets[k] = d->qpos[m->jnt_qposadr[finger_joints[k]]];
+      set_target(finger_joints[k], targets[k]);
+    }
+    log << "MuJoCo: closing the hand at " << parameters.closing_speed
+        << " rad/s, grip " << parameters.grip << " rad beyond first touch\n";
+    double next_sample = 0;
+    record(0, d);
+    while (std::find(touched.begin(), touched.end(), false) != touched.end())
+    {
+      if (d->time > parameters.maximum_time)
+        throw InputError("The hand did not touch the object with every "
+                         "finger joint's link within 'Maximum time' (" +
+                         std::to_string(parameters.maximum_time) +
+                         " s). Fix: move the hand closer ('Base position') or "
+                         "raise the maximum time.");
+      for (std::size_t k = 0; k < finger_joints.size(); ++k)
+        if (!touched[k])
+          close_joint(k, touched, targets);
+      mj_step(m, d);
+      if (d->time >= next_sample)
+      {
+        record(d->time, d);
+        next_sample += parameters.sample_interval;
+      }
+    }
+    hold_until_settled();
+    record_equilibrium();
   }
 
   void

@@ -47,6 +47,81 @@ namespace softgrasp
     return weight > 0 ? sum / weight : 0;
   }
 
+  namespace
+  {
+    /// The servo of a position-controlled arm during the pull, while it
+    /// lives: gain @p stiffness (N/m), the slide joint critically damped
+    /// for the hand's @p mass (kg); the scene's own values come back
+    /// afterwards, also when the pull throws.
+    class PullServo
+    {
+    public:
+      PullServo(mjModel     *model,
+                const int    actuator,
+                const int    dof,
+                const double stiffness,
+                const double mass)
+          : model(model)
+          , actuator(actuator)
+          , dof(dof)
+          , gain(model->actuator_gainprm[mjNGAIN * actuator])
+          , bias(model->actuator_biasprm[mjNBIAS * actuator + 1])
+          , damping(model->dof_damping[dof])
+      {
+        model->actuator_gainprm[mjNGAIN * actuator]     = stiffness;
+        model->actuator_biasprm[mjNBIAS * actuator + 1] = -stiffness;
+        model->dof_damping[dof] = 2 * std::sqrt(stiffness * mass);
+      }
+      ~PullServo()
+      {
+        model->actuator_gainprm[mjNGAIN * actuator]     = gain;
+        model->actuator_biasprm[mjNBIAS * actuator + 1] = bias;
+        model->dof_damping[dof]                         = damping;
+      }
+      PullServo(const PullServo &)            = delete;
+      PullServo &operator=(const PullServo &) = delete;
+
+    private:
+      mjModel     *model;
+      const int    actuator, dof;
+      const double gain, bias, damping;
+    };
+
+    /// Adds one step's link forces and slip speeds to the level's sums.
+    void add_to_means(const std::vector<LinkContactForce> &f,
+                      const std::vector<double>           &v,
+                      const Eigen::Vector3d               &axis,
+                      RigidGripLevel                      &level)
+    {
+      for (std::size_t k = 0; k < f.size(); ++k)
+      {
+        auto &link = level.links[k];
+        link.normal_mean += f[k].normal_force.norm();
+        link.lateral_mean += f[k].lateral_force().norm();
+        link.drag_mean += -f[k].force.dot(axis);
+        link.slip_mean += v[k];
+      }
+    }
+
+    /// The sums over @p n steps as means; whether each link slides.
+    void finish_means(const unsigned int       n,
+                      const GripLevelSettings &settings,
+                      RigidGripLevel          &level)
+    {
+      for (auto &link : level.links)
+      {
+        const double steps = std::max(1u, n);
+        link.normal_mean /= steps;
+        link.lateral_mean /= steps;
+        link.drag_mean /= steps;
+        link.slip_mean /= steps;
+        link.slides =
+            link.normal_mean > 0 &&
+            link.slip_mean > settings.slide_fraction * settings.pull_speed;
+      }
+    }
+  } // namespace
+
   void GraspSimulation::pull_at_level(const GripLevelSettings &settings,
                                       RigidGripLevel          &level)
   {
@@ -58,19 +133,11 @@ namespace softgrasp
     const double   t0          = d->time;
     const double   interval    = duration / settings.samples;
     const Eigen::Vector3d axis = parameters.pull.axis.normalized();
-    // The servo of a position-controlled arm during the pull: gain
-    // pull_stiffness, the slide joint critically damped for the hand's
-    // mass; the scene's own values come back afterwards.
-    mjModel     *model    = mujoco.model();
-    const int    actuator = mujoco.actuator_of_joint(slide_joint);
-    const int    dof      = m->jnt_dofadr[slide_joint];
-    const double gain     = model->actuator_gainprm[mjNGAIN * actuator];
-    const double bias     = model->actuator_biasprm[mjNBIAS * actuator + 1];
-    const double damping  = model->dof_damping[dof];
-    model->actuator_gainprm[mjNGAIN * actuator]     = settings.pull_stiffness;
-    model->actuator_biasprm[mjNBIAS * actuator + 1] = -settings.pull_stiffness;
-    model->dof_damping[dof] =
-        2 * std::sqrt(settings.pull_stiffness * m->body_subtreemass[base_body]);
+    const PullServo       servo(mujoco.model(),
+                          mujoco.actuator_of_joint(slide_joint),
+                          m->jnt_dofadr[slide_joint],
+                          settings.pull_stiffness,
+                          m->body_subtreemass[base_body]);
 
     level.links.clear();
     for (const int g : link_geoms)
@@ -110,16 +177,10 @@ namespace softgrasp
       if (d->time - t0 >= 0.5 * duration)
       { // means over every step: MuJoCo's sliding contacts chatter
         mj_forward(m, d);
-        const auto f = link_contact_forces(m, d, object_body, link_geoms);
-        const auto v = link_slip_speeds(m, d, object_body, link_geoms);
-        for (std::size_t k = 0; k < link_geoms.size(); ++k)
-        {
-          auto &link = level.links[k];
-          link.normal_mean += f[k].normal_force.norm();
-          link.lateral_mean += f[k].lateral_force().norm();
-          link.drag_mean += -f[k].force.dot(axis);
-          link.slip_mean += v[k];
-        }
+        add_to_means(link_contact_forces(m, d, object_body, link_geoms),
+                     link_slip_speeds(m, d, object_body, link_geoms),
+                     axis,
+                     level);
         ++n_avg;
       }
       if (d->time >= next - 0.5 * m->opt.timestep)
@@ -130,20 +191,59 @@ namespace softgrasp
     }
     if (level.time.back() < d->time - t0 - 0.5 * m->opt.timestep)
       sample();
-    model->actuator_gainprm[mjNGAIN * actuator]     = gain;
-    model->actuator_biasprm[mjNBIAS * actuator + 1] = bias;
-    model->dof_damping[dof]                         = damping;
-    for (auto &link : level.links)
+    finish_means(n_avg, settings, level);
+  }
+
+  void GraspSimulation::find_closure(const double             low,
+                                     const double             low_force,
+                                     const int                grip_geom,
+                                     const GripLevelSettings &settings,
+                                     RigidGripLevel          &level)
+  {
+    const double tolerance = settings.force_tolerance * level.target_force;
+    // Bracket the target from the level below, then regula falsi
+    // (Illinois): the force grows with the closure.
+    double a = low, fa = low_force - level.target_force;
+    double b = std::max(a + 0.02, 2 * a), fb = 0;
+    for (;;)
     {
-      const double n = std::max(1u, n_avg);
-      link.normal_mean /= n;
-      link.lateral_mean /= n;
-      link.drag_mean /= n;
-      link.slip_mean /= n;
-      link.slides =
-          link.normal_mean > 0 &&
-          link.slip_mean > settings.slide_fraction * settings.pull_speed;
+      b  = std::min(b, settings.maximum_closure);
+      fb = grip_force_at(b, grip_geom, settings) - level.target_force;
+      ++level.trials;
+      if (fb >= 0 || b >= settings.maximum_closure)
+        break;
+      a = b, fa = fb;
+      b = 2 * b;
     }
+    double c = b, fc = fb;
+    if (fa >= 0)
+      c = a, fc = fa;
+    int side = 0;
+    while (std::abs(fc) > tolerance && fb >= 0 && fa < 0 && level.trials < 30)
+    {
+      c  = (a * fb - b * fa) / (fb - fa);
+      fc = grip_force_at(c, grip_geom, settings) - level.target_force;
+      ++level.trials;
+      if (fc > 0)
+      {
+        b = c, fb = fc;
+        if (side == 1)
+          fa *= 0.5;
+        side = 1;
+      }
+      else
+      {
+        a = c, fa = fc;
+        if (side == -1)
+          fb *= 0.5;
+        side = -1;
+      }
+    }
+    // Leave the simulation at the chosen closure, settled, for the pull.
+    level.reached_force = grip_force_at(c, grip_geom, settings);
+    level.closure       = c;
+    level.matched =
+        std::abs(level.reached_force - level.target_force) <= 2 * tolerance;
   }
 
   std::vector<RigidGripLevel>
@@ -183,53 +283,11 @@ namespace softgrasp
     for (const double target : grip_level_forces(settings, low_force))
     {
       RigidGripLevel level;
-      level.target_force     = target;
-      level.friction         = friction;
-      const double tolerance = settings.force_tolerance * target;
-      // Bracket the target from the level below, then regula falsi
-      // (Illinois): the force grows with the closure.
-      double a = low, fa = low_force - target;
-      double b = std::max(a + 0.02, 2 * a), fb = 0;
-      for (;;)
-      {
-        b  = std::min(b, settings.maximum_closure);
-        fb = grip_force_at(b, grip_geom, settings) - target;
-        ++level.trials;
-        if (fb >= 0 || b >= settings.maximum_closure)
-          break;
-        a = b, fa = fb;
-        b = 2 * b;
-      }
-      double c = b, fc = fb;
-      if (fa >= 0)
-        c = a, fc = fa;
-      int side = 0;
-      while (std::abs(fc) > tolerance && fb >= 0 && fa < 0 && level.trials < 30)
-      {
-        c  = (a * fb - b * fa) / (fb - fa);
-        fc = grip_force_at(c, grip_geom, settings) - target;
-        ++level.trials;
-        if (fc > 0)
-        {
-          b = c, fb = fc;
-          if (side == 1)
-            fa *= 0.5;
-          side = 1;
-        }
-        else
-        {
-          a = c, fa = fc;
-          if (side == -1)
-            fb *= 0.5;
-          side = -1;
-        }
-      }
-      // Leave the simulation at the chosen closure, settled, for the pull.
-      level.reached_force = grip_force_at(c, grip_geom, settings);
-      level.closure       = c;
-      level.matched = std::abs(level.reached_force - target) <= 2 * tolerance;
-      low           = c;
-      low_force     = level.reached_force;
+      level.target_force = target;
+      level.friction     = friction;
+      find_closure(low, low_force, grip_geom, settings, level);
+      low       = level.closure;
+      low_force = level.reached_force;
       pull_at_level(settings, level);
       log << "  level " << std::setw(2) << levels.size() + 1 << ": "
           << std::setw(7) << level.reached_force << " N (target " << target

@@ -172,18 +172,19 @@ namespace softgrasp
     AtomicFile::write(pulls_file, pulls.str());
   }
 
-  void write_sweep_figure(const std::vector<SweepPoint> &rigid,
-                          const std::vector<SweepPoint> &fe,
-                          const double                   friction,
-                          const std::string             &grip_link,
-                          const std::string             &directory,
-                          const std::string             &base,
-                          std::ostream                  &log)
+  namespace
   {
-    double       top    = 1;
-    unsigned int levels = 2;
+    /// The sweep figure's data (gnuplot blocks: rigid, finite elements);
+    /// returns the largest force (N, at least 1) and the highest level.
+    std::pair<double, unsigned int>
+    write_figure_data(const std::vector<SweepPoint> &rigid,
+                      const std::vector<SweepPoint> &fe,
+                      const std::string             &grip_link,
+                      const std::string             &file)
     {
-      std::ofstream out(directory + "/" + base + "_figure.dat");
+      double             top    = 1;
+      unsigned int       levels = 2;
+      std::ostringstream out;
       out << "# grip link " << grip_link
           << ": level, grip force at the level, then over the second half "
              "of the pull the mean normal and lateral force and the third "
@@ -207,7 +208,21 @@ namespace softgrasp
       }
       if (fe.empty())
         out << "-1 0 0 0 0\n"; // an empty block would stop gnuplot
+      AtomicFile::write(file, out.str());
+      return {top, levels};
     }
+  } // namespace
+
+  void write_sweep_figure(const std::vector<SweepPoint> &rigid,
+                          const std::vector<SweepPoint> &fe,
+                          const double                   friction,
+                          const std::string             &grip_link,
+                          const std::string             &directory,
+                          const std::string             &base,
+                          std::ostream                  &log)
+  {
+    const auto [top, levels] = write_figure_data(
+        rigid, fe, grip_link, directory + "/" + base + "_figure.dat");
     const std::string data = "'" + base + "_figure.dat'";
     {
       std::ofstream gp(directory + "/" + base + "_figure.gnuplot");
@@ -266,12 +281,12 @@ namespace softgrasp
   {
     Hdf5Record::write(
         filename,
-        [&](dealii::HDF5::File &file)
+        [&](Hdf5Record::Group &file)
         {
-          file.set_attribute("schema", std::string("softgrasp rigid sweep"));
-          file.set_attribute("settings", record.settings);
-          file.set_attribute("friction", record.friction);
-          Hdf5Record::write_vector(file, "targets", record.targets);
+          file.attribute("schema", std::string("softgrasp rigid sweep"));
+          file.attribute("settings", record.settings);
+          file.attribute("friction", record.friction);
+          file.vector("targets", record.targets);
           std::vector<double> level, grip, normal, lateral, lateral_max;
           for (const auto &p : record.points)
           {
@@ -281,12 +296,12 @@ namespace softgrasp
             lateral.push_back(p.lateral_mean);
             lateral_max.push_back(p.lateral_max);
           }
-          auto points = file.create_group("grip_link");
-          Hdf5Record::write_vector(points, "level", level);
-          Hdf5Record::write_vector(points, "grip_force", grip);
-          Hdf5Record::write_vector(points, "normal_mean", normal);
-          Hdf5Record::write_vector(points, "lateral_mean", lateral);
-          Hdf5Record::write_vector(points, "lateral_max", lateral_max);
+          auto points = file.group("grip_link");
+          points.vector("level", level);
+          points.vector("grip_force", grip);
+          points.vector("normal_mean", normal);
+          points.vector("lateral_mean", lateral);
+          points.vector("lateral_max", lateral_max);
         });
   }
 

@@ -179,24 +179,11 @@ namespace softgrasp
                                           const MaterialLibrary  &materials,
                                           const InjuryThresholds &thresholds)
   {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    limits               = thresholds;
-    pressure             = SurfacePressure();
-    has_contact          = false;
-    const auto  ids      = materials.material_ids();
-    const auto &fe       = dof_handler.get_fe();
-    rows.assign(ids.size(), Tissue());
-    std::map<types::material_id, unsigned int> index;
-    for (unsigned int k = 0; k < ids.size(); ++k)
-    {
-      index[ids[k]]       = k;
-      rows[k].id          = ids[k];
-      rows[k].name        = materials.get(ids[k]).name();
-      rows[k].e_max.value = -inf;
-      rows[k].e_min.value = inf;
-      rows[k].volume_compressed.assign(limits.compressive_strains.size(), 0);
-      rows[k].volume_stretched.assign(limits.tensile_strains.size(), 0);
-    }
+    limits            = thresholds;
+    pressure          = SurfacePressure();
+    has_contact       = false;
+    const auto &fe    = dof_handler.get_fe();
+    const auto  index = start_rows(materials);
 
     const QGauss<dim>                quadrature(fe.degree + 1);
     FEValues<dim>                    fe_values(mapping,
@@ -240,7 +227,32 @@ namespace softgrasp
         }
       }
 
-    const MPI_Comm comm = dof_handler.get_communicator();
+    finish_rows(dof_handler.get_communicator());
+  }
+
+  template <int dim>
+  std::map<types::material_id, unsigned int>
+  TissueInjury<dim>::start_rows(const MaterialLibrary &materials)
+  {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const auto       ids = materials.material_ids();
+    rows.assign(ids.size(), Tissue());
+    std::map<types::material_id, unsigned int> index;
+    for (unsigned int k = 0; k < ids.size(); ++k)
+    {
+      index[ids[k]]       = k;
+      rows[k].id          = ids[k];
+      rows[k].name        = materials.get(ids[k]).name();
+      rows[k].e_max.value = -inf;
+      rows[k].e_min.value = inf;
+      rows[k].volume_compressed.assign(limits.compressive_strains.size(), 0);
+      rows[k].volume_stretched.assign(limits.tensile_strains.size(), 0);
+    }
+    return index;
+  }
+
+  template <int dim> void TissueInjury<dim>::finish_rows(const MPI_Comm comm)
+  {
     for (auto &row : rows)
     {
       row.volume            = Utilities::MPI::sum(row.volume, comm);
@@ -249,7 +261,6 @@ namespace softgrasp
       row.e_max             = extreme_over_ranks(row.e_max, 1, comm);
       row.e_min             = extreme_over_ranks(row.e_min, -1, comm);
     }
-    // tissues without cells (an id in the library but not in the mesh)
     std::vector<Tissue> kept;
     for (auto &row : rows)
       if (row.volume > 0)

@@ -246,10 +246,39 @@ namespace softgrasp
                        std::to_string(triangles.size()) +
                        " triangles; a closed surface needs at least 4. Fix: "
                        "give a closed triangle mesh.");
+    check_closed(source);
+    // Outward orientation: a positive enclosed volume.
+    double volume = 0;
+    for (const auto &t : triangles)
+      volume += vertices[t[0]].dot(vertices[t[1]].cross(vertices[t[2]])) / 6;
+    if (volume < 0)
+      for (auto &t : triangles)
+        std::swap(t[1], t[2]);
+
+    // The edges again, in the outward orientation: an edge's other
+    // triangle is the one with the reversed edge.
+    compute_normals(check_closed(source), source);
+    Eigen::Vector3d lower = vertices[0], upper = vertices[0];
+    for (const auto &v : vertices)
+    {
+      radius = std::max(radius, v.norm());
+      lower  = lower.cwiseMin(v);
+      upper  = upper.cwiseMax(v);
+    }
+    size = (upper - lower).norm();
+    order.resize(triangles.size());
+    for (unsigned int t = 0; t < order.size(); ++t)
+      order[t] = t;
+    tree.reserve(2 * triangles.size());
+    build(0, triangles.size());
+  }
+
+  TriangleMeshShape::EdgeMap
+  TriangleMeshShape::check_closed(const std::string &source) const
+  {
     // Closed and consistently oriented: every directed edge appears once,
     // and its reverse once.
-    std::map<std::pair<unsigned, unsigned>, std::pair<unsigned, unsigned>>
-        edges; // directed edge -> (triangle, local edge)
+    EdgeMap edges;
     for (unsigned int t = 0; t < triangles.size(); ++t)
       for (unsigned int k = 0; k < 3; ++k)
       {
@@ -278,14 +307,12 @@ namespace softgrasp
             "the mesh; the sign of the distance needs a closed "
             "surface.");
 
-    // Outward orientation: a positive enclosed volume.
-    double volume = 0;
-    for (const auto &t : triangles)
-      volume += vertices[t[0]].dot(vertices[t[1]].cross(vertices[t[2]])) / 6;
-    if (volume < 0)
-      for (auto &t : triangles)
-        std::swap(t[1], t[2]);
+    return edges;
+  }
 
+  void TriangleMeshShape::compute_normals(const EdgeMap     &edges,
+                                          const std::string &source)
+  {
     face_normals.resize(triangles.size());
     vertex_normals.assign(vertices.size(), Eigen::Vector3d::Zero());
     for (unsigned int t = 0; t < triangles.size(); ++t)
@@ -323,20 +350,6 @@ namespace softgrasp
         edge_normals[t][k] =
             (face_normals[t] + face_normals[other]).normalized();
       }
-
-    Eigen::Vector3d lower = vertices[0], upper = vertices[0];
-    for (const auto &v : vertices)
-    {
-      radius = std::max(radius, v.norm());
-      lower  = lower.cwiseMin(v);
-      upper  = upper.cwiseMax(v);
-    }
-    size = (upper - lower).norm();
-    order.resize(triangles.size());
-    for (unsigned int t = 0; t < order.size(); ++t)
-      order[t] = t;
-    tree.reserve(2 * triangles.size());
-    build(0, triangles.size());
   }
 
   int TriangleMeshShape::build(const unsigned int begin, const unsigned int end)

@@ -99,6 +99,18 @@ namespace softgrasp
     unsigned int n_active() const;
     unsigned int n_slip() const;
 
+  private:
+    /// Whether face @p f of @p cell lies on a slave boundary.
+    template <typename CellIterator>
+    bool on_slave(const CellIterator &cell, const unsigned int f) const;
+    /// The reference nodal areas D_j = int N_j dA over the slave surface
+    /// (m^2; m per metre of thickness in 2D), ghosted.
+    dealii::TrilinosWrappers::MPI::Vector
+    nodal_areas(const SolidSystem<dim> &system) const;
+    /// node_list = the owned slave nodes, found from owned and ghost cells.
+    void collect_nodes(const SolidSystem<dim>                      &system,
+                       const dealii::TrilinosWrappers::MPI::Vector &area);
+
   protected:
     struct Proximity
     {

@@ -4,6 +4,7 @@
 #include <array>
 #include <deal.II/base/timer.h>
 #include <softgrasp/contact/contact_surface.h>
+#include <softgrasp/contact/nodal_contact_law.h>
 #include <softgrasp/mechanics/nodal_conditions.h>
 
 namespace softgrasp
@@ -139,6 +140,27 @@ namespace softgrasp
 
     Eigen::Matrix3d normal_gradient(const Proximity       &p,
                                     const Eigen::Vector3d &x) const;
+
+    /// The input of the nodal contact law of node @p j at @p x under the
+    /// residual force @p f, paired with @p p.
+    NodalContactInput contact_input(const unsigned int     j,
+                                    const Eigen::Vector3d &x,
+                                    const Eigen::Vector3d &f,
+                                    const Proximity       &p) const;
+
+    /// Stores the law's result @p lin for node @p j, paired with @p p, in
+    /// the node and its rule.
+    void store(const unsigned int               j,
+               const Proximity                 &p,
+               const NodalContactInput         &input,
+               const NodalContactLinearization &lin);
+
+    /// Constrained components (symmetry planes, hanging nodes) keep their
+    /// own equations: @p rule's rows of them become du_a = 0 (A = I,
+    /// B = 0, phi = f); the contact conditions act on the free ones.
+    static void keep_constrained_rows(const Node            &node,
+                                      NodeLaw               &rule,
+                                      const Eigen::Vector3d &f);
 
     /// Collect relevant_nodes.
     void find_relevant_nodes(const SolidSystem<dim> &system);

@@ -92,6 +92,23 @@ namespace softgrasp
                       Eigen::Vector3d       &x,
                       const double           target_gap = 0) const;
 
+    using Node = typename ContactSurface<dim>::Node;
+    /**
+     * The correction of one node at @p x inside geom @p p: back onto the
+     * surface (less its @p allowed overlap, m) with the normal multiplier,
+     * then, within Coulomb's cone, to where the geom carried its old
+     * position @p x_old. @p k (N/m) turns a move into a force; @p mask
+     * holds the free components. Moves @p x and sets the node's force,
+     * gap, normal, slip and status.
+     */
+    void correct(Node                  &node,
+                 const Proximity       &p,
+                 const Eigen::Vector3d &mask,
+                 const Eigen::Vector3d &x_old,
+                 const double           k,
+                 const double           allowed,
+                 Eigen::Vector3d       &x) const;
+
     dealii::TimerOutput           &timer;
     std::vector<std::vector<Pose>> poses_old;
     double                         tolerance = 0; ///< m

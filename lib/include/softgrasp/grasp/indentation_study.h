@@ -186,6 +186,13 @@ namespace softgrasp
     void summarise(const Simulation<3> &solver, const KinematicsData &phases);
     void write_link_table(const Simulation<3>  &solver,
                           const KinematicsData &phases);
+    /// The links that touch in either model (their names into result):
+    /// their finite element and MuJoCo histories.
+    std::pair<std::vector<const LinkForceHistory *>,
+              std::vector<const KinematicsData::LinkHistory *>>
+    touching_links(const KinematicsData &phases);
+    /// The forces on the links, finite elements against MuJoCo (rank 0).
+    void print_links() const;
     /// Assess the final state (all ranks); write and print it on rank 0.
     void assess_injury(const Simulation<3> &solver);
 

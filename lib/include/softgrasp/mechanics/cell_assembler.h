@@ -198,6 +198,22 @@ namespace softgrasp
         AssemblyScratchData<dim> &scratch,
         AssemblyCopyData         &copy) const;
 
+    /// The follower pressure @p p (Pa) on the face that
+    /// scratch.fe_face_values was set up for: its external force
+    /// -int p J F^-T N N_k dA and, with @p with_matrix, its tangent.
+    void add_pressure(const dealii::Function<dim>                 &p,
+                      const dealii::TrilinosWrappers::MPI::Vector &u,
+                      const bool                                   with_matrix,
+                      AssemblyScratchData<dim>                    &scratch,
+                      AssemblyCopyData                            &copy) const;
+
+    /// The element dilatation of a mixed cell: J~ and p~ given, or
+    /// projected from J; their coefficients into @p copy.
+    void start_dilatation(const Material               &material,
+                          const DilatationCoefficients *given,
+                          AssemblyScratchData<dim>     &scratch,
+                          AssemblyCopyData             &copy) const;
+
     const MaterialLibrary         &materials;
     const BoundaryConditions<dim> &boundary_conditions;
     const Formulation              formulation;

@@ -46,6 +46,16 @@ namespace softgrasp
     /// Newton) from the residual norms so far and the Newton tolerance (N).
     double forcing_term(const std::vector<double> &residuals,
                         const double               tolerance) const;
+    /**
+     * Moves the solution along @p du: the full step, or a step cut by the
+     * line search (see the .cc); updates @p violation and @p state to the
+     * new iterate and returns the step length alpha.
+     */
+    double line_search(SolidSystem<dim>                            &system,
+                       const dealii::TrilinosWrappers::MPI::Vector &du,
+                       const double                                 u_scale,
+                       double                                      &violation,
+                       typename SolidSystem<dim>::AssemblyResult &state) const;
 
     const NewtonParameters      parameters;
     dealii::ConditionalOStream &log;

@@ -180,6 +180,16 @@ namespace softgrasp
     /// split tangent, record its volumetric coupling.
     void distribute_cell_tangent(const AssemblyCopyData &copy,
                                  dealii::Vector<double> &cell_rhs);
+    /// Zero the vectors (and the tangent) that assemble() adds into.
+    void start_assembly(const bool with_matrix);
+    /// Exchange what assemble() added between processes.
+    void compress_assembly(const bool with_matrix);
+    /// Make @p result's failure (an inverted element on any process) the
+    /// failure on every process; returns whether one failed.
+    bool share_failure(AssemblyResult &result) const;
+    /// Let the nodal conditions (contact) evaluate themselves at the new
+    /// residual, or add their rows to the tangent, and act on the residual.
+    void apply_nodal_conditions(const bool with_matrix);
 
     dealii::parallel::distributed::Triangulation<dim> &triangulation;
     const MaterialLibrary                             &materials;

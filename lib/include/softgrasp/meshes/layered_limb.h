@@ -95,6 +95,9 @@ namespace softgrasp
     void        parse_parameters(dealii::ParameterHandler &prm) override;
     void
     create_coarse_mesh(dealii::Triangulation<3> &triangulation) const override;
+    /// Manifold ids of every face and edge, and boundary ids from where
+    /// each boundary face lies (skin, bone, the two ends).
+    void set_ids(dealii::Triangulation<3> &triangulation) const;
     void attach_manifolds(dealii::Triangulation<3> &triangulation,
                           const Placement<3>       &placement) const override;
     bool is_curved() const override

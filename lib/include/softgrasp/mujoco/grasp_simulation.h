@@ -60,6 +60,18 @@ namespace softgrasp
   private:
     void place_base();
     void close_to_equilibrium();
+    /// One time step of closing finger joint @p k (index into
+    /// finger_joints): it waits for its parent link's joint, stops at first
+    /// touch with its target @p grip beyond, or moves its target on.
+    void close_joint(const std::size_t    k,
+                     std::vector<bool>   &touched,
+                     std::vector<double> &targets);
+    /// Hold the targets until the grasp settles (recording as it goes); an
+    /// InputError naming what moves or misses contact if it never does.
+    void hold_until_settled();
+    /// The equilibrium state: time, phase, state copy, targets and the
+    /// links' contact forces (logged).
+    void record_equilibrium();
     void indent();
     void pull();
     /// Step until at rest with settled forces, at most @p max_time (s).
@@ -78,6 +90,18 @@ namespace softgrasp
     double grip_force_at(const double             closure,
                          const int                grip_geom,
                          const GripLevelSettings &settings);
+    /**
+     * The closure (rad) at which the grip force on @p grip_geom meets
+     * @p level's target within @p tolerance (N): bracketed from the level
+     * below (closure @p low, force @p low_force), then regula falsi. The
+     * simulation is left at that closure, settled; sets the level's force,
+     * closure, trials and whether it was met.
+     */
+    void find_closure(const double             low,
+                      const double             low_force,
+                      const int                grip_geom,
+                      const GripLevelSettings &settings,
+                      RigidGripLevel          &level);
     /// The pull of one level, from the state grip_force_at() left.
     void pull_at_level(const GripLevelSettings &settings,
                        RigidGripLevel          &level);

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <map>
 #include <ostream>
 #include <softgrasp/materials/material_library.h>
 #include <string>
@@ -133,6 +134,13 @@ namespace softgrasp
     void compute_pressure(const SolidSystem<dim>    &system,
                           const ContactSurface<dim> &contact,
                           const ContactOutput<dim>  &output);
+    /// One empty row per tissue of @p materials; returns the row of each
+    /// material id.
+    std::map<dealii::types::material_id, unsigned int>
+    start_rows(const MaterialLibrary &materials);
+    /// Sum the rows over the processes; drop tissues without cells (an id
+    /// in the library but not in the mesh).
+    void finish_rows(const MPI_Comm comm);
 
     InjuryThresholds    limits;
     std::vector<Tissue> rows;

@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <map>
 #include <softgrasp/rigid/shape.h>
 #include <string>
 #include <vector>
@@ -54,6 +55,16 @@ namespace softgrasp
       int             left = -1, right = -1; ///< children, or -1 for a leaf
       unsigned int    begin = 0, end = 0;    ///< triangle range of a leaf
     };
+
+    /// Directed edge (a, b) -> (triangle, local edge).
+    using EdgeMap = std::map<std::pair<unsigned int, unsigned int>,
+                             std::pair<unsigned int, unsigned int>>;
+    /// The directed edges of a closed, consistently oriented surface; an
+    /// InputError naming @p source otherwise.
+    EdgeMap check_closed(const std::string &source) const;
+    /// Face, vertex (angle-weighted) and edge normals of the outward
+    /// oriented surface; an InputError for a degenerate triangle.
+    void compute_normals(const EdgeMap &edges, const std::string &source);
 
     int  build(const unsigned int begin, const unsigned int end);
     void closest(const int              node,
