@@ -5,7 +5,9 @@
 // the file's polyhedron: the volume and area errors stall. With, they
 // converge to the exact values, as close as the generated curved mesh
 // refined as often (the tube, whose cylindrical manifold is the
-// generator's own, to round-off). Bad rules are refused, naming the fix.
+// generator's own, to round-off). Bad rules are refused, naming the fix:
+// among them rules whose surface does not fit the faces they name (a
+// wrong centre or axis) and two rules on one id.
 #include "../tests.h"
 #include "measure.h"
 
@@ -215,4 +217,10 @@ main()
   refused("boundary 0: cylinder 1, 0, 0", "through");
   refused("boundary 0: sphere 0, 0", "Mesh/File/Manifolds");
   refused("boundary 0: sphere nan, 0, 0", "not a finite number");
+  // a centre off by a quarter of the radius: the faces are not on a sphere
+  refused("boundary 0: sphere 0.005, 0, 0", "does not fit the mesh");
+  refused("boundary 0: cylinder 0, 0, 1 through 0, 0, 0",
+          "does not fit the mesh");
+  refused("boundary 0: sphere 0, 0, 0; boundary 0: sphere 0, 0, 0",
+          "both give boundary id 0");
 }

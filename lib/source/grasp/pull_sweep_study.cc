@@ -1,9 +1,11 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <softgrasp/base/atomic_file.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/grasp/pull_sweep_study.h>
@@ -18,34 +20,57 @@ namespace softgrasp
 
   namespace
   {
+    /// Entries that do not change a recorded level's result: the time
+    /// steps (they shape only what is still to compute; every record keeps
+    /// the value it was computed with).
+    bool numerical(const std::string &name)
+    {
+      return name == "Time/Time step" || name == "Time/Minimum time step" ||
+             name == "Grasp-and-pull sweep/Closing time step";
+    }
+
     /// The first entry of @p now that @p before had otherwise ("'path' is
-    /// 'x', was 'y'"), or "" if the two are alike.
+    /// 'x', was 'y'"), or "" if the two are alike but for numerical()
+    /// entries and those of sections not in the settings (Checkpoint).
     std::string changed_setting(const std::string &before,
                                 const std::string &now)
     {
       if (before == now)
         return "";
-      std::map<std::string, std::string> old;
-      std::istringstream                 a(before), b(now);
-      const auto                         split = [](const std::string &line)
+      const auto entries = [](const std::string &text)
       {
-        const auto at = line.find(" = ");
-        return std::make_pair(line.substr(0, at),
-                              at == std::string::npos ? ""
-                                                      : line.substr(at + 3));
+        std::map<std::string, std::string> result;
+        std::istringstream                 in(text);
+        for (std::string line; std::getline(in, line);)
+        {
+          const auto at   = line.find(" = ");
+          const auto name = line.substr(0, at);
+          if (!numerical(name) && name.rfind("Checkpoint/", 0) != 0)
+            result[name] = at == std::string::npos ? "" : line.substr(at + 3);
+        }
+        return result;
       };
-      for (std::string line; std::getline(a, line);)
-        old.insert(split(line));
-      for (std::string line; std::getline(b, line);)
+      const auto old = entries(before), current = entries(now);
+      for (const auto &[name, value] : current)
       {
-        const auto [name, value] = split(line);
-        const auto it            = old.find(name);
+        const auto it = old.find(name);
         if (it == old.end())
           return "'" + name + "' is new";
         if (it->second != value)
           return "'" + name + "' is '" + value + "', was '" + it->second + "'";
       }
-      return "an entry was removed";
+      return old.size() == current.size() ? "" : "an entry was removed";
+    }
+
+    /// Remove @p path (a file or folder) on rank 0; all ranks wait.
+    void remove_on_root(MPI_Comm comm, const std::string &path)
+    {
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code code;
+        std::filesystem::remove_all(path, code);
+      }
+      MPI_Barrier(comm);
     }
 
     /// The named time series of @p link that a record stores (but force).
@@ -169,7 +194,7 @@ namespace softgrasp
       , output(arm_study.inputs().solver.output.directory)
   {
     for (const auto &[name, value] : ParameterReader::flatten(prm))
-      if (name.rfind("Output/", 0) != 0)
+      if (name.rfind("Output/", 0) != 0 && name.rfind("Checkpoint/", 0) != 0)
         settings += name + " = " + value + "\n";
   }
 
@@ -185,34 +210,53 @@ namespace softgrasp
     return level_directory(k) + "/level.h5";
   }
 
+  std::string PullSweepStudy::closing_file(const unsigned int k) const
+  {
+    return level_directory(k) + "/closing.h5";
+  }
+
+  std::vector<std::optional<FeGripLevel>>
+  PullSweepStudy::read_records(const std::vector<double> &forces) const
+  {
+    // Every rank reads the records (all need the levels' times).
+    std::vector<std::optional<FeGripLevel>> records(forces.size());
+    for (unsigned int k = 1; k <= forces.size(); ++k)
+    {
+      const std::string file = std::filesystem::exists(record_file(k))
+                                   ? record_file(k)
+                                   : closing_file(k);
+      if (!std::filesystem::exists(file))
+        continue;
+      FeGripLevel level = read_grip_level(file);
+      const auto  fix   = ". Fix: start afresh in another 'Output/Directory', "
+                          "or delete '" +
+                       output + "/fe_closing' and the level_* directories.";
+      const std::string change = changed_setting(level.settings, settings);
+      if (!change.empty())
+        throw InputError("Level " + std::to_string(k) + " in '" + file +
+                         "' was computed with other settings: " + change + fix);
+      if (std::abs(level.target_force - forces[k - 1]) > 1e-9 * forces[k - 1])
+        throw InputError(
+            "Level " + std::to_string(k) + " in '" + file + "' was closed to " +
+            std::to_string(level.target_force) + " N; this sweep asks for " +
+            std::to_string(forces[k - 1]) +
+            " N (its levels or the rigid stage changed)" + fix);
+      if (level.state_level == 0 || level.state_level > k)
+        level.state_level = k;
+      records[k - 1] = std::move(level);
+    }
+    return records;
+  }
+
   std::vector<FeGripLevel>
   PullSweepStudy::recorded_levels(const std::vector<double> &forces) const
   {
-    // Every rank reads the records (all need the levels' times).
     std::vector<FeGripLevel> levels;
-    for (std::size_t k = 0; k < forces.size(); ++k)
+    for (auto &record : read_records(forces))
     {
-      const std::string file = record_file(k + 1);
-      if (!std::filesystem::exists(file))
+      if (!record)
         break;
-      levels.push_back(read_grip_level(file));
-      const std::string change =
-          changed_setting(levels.back().settings, settings);
-      if (!change.empty())
-        throw InputError("Level " + std::to_string(k + 1) + " in '" + file +
-                         "' was computed with other settings: " + change +
-                         ". Fix: start afresh in another 'Output/Directory', "
-                         "or delete '" +
-                         output + "/fe_closing' and the level_* directories.");
-      const double recorded = levels.back().target_force;
-      if (std::abs(recorded - forces[k]) > 1e-9 * forces[k])
-        throw InputError(
-            "Level " + std::to_string(k + 1) + " in '" + file +
-            "' was closed to " + std::to_string(recorded) +
-            " N; this sweep asks for " + std::to_string(forces[k]) +
-            " N (its levels or the rigid stage changed). Fix: start afresh "
-            "in another 'Output/Directory', or delete '" +
-            output + "/fe_closing' and the level_* directories.");
+      levels.push_back(std::move(*record));
     }
     return levels;
   }
@@ -225,7 +269,11 @@ namespace softgrasp
       try
       {
         std::filesystem::create_directories(level_directory(k));
-        write_grip_level(level, record_file(k));
+        // the closing's record; the full one once the level is finished
+        if (!level.finished() || !level.reached)
+          write_grip_level(level, closing_file(k));
+        if (level.finished())
+          write_grip_level(level, record_file(k));
       }
       catch (const std::exception &e)
       {
@@ -236,15 +284,76 @@ namespace softgrasp
       throw InputError(error);
   }
 
+  void PullSweepStudy::drop_shared(
+      std::vector<std::optional<FeGripLevel>> &records) const
+  {
+    for (unsigned int k = 2; k <= records.size(); ++k)
+      if (records[k - 1] && records[k - 1]->state_level < k &&
+          !records[records[k - 1]->state_level - 1])
+      {
+        for (const auto &file : {record_file(k), closing_file(k)})
+          remove_on_root(comm, file);
+        remove_on_root(comm, level_directory(k) + "/closed");
+        records[k - 1].reset();
+      }
+  }
+
+  unsigned int PullSweepStudy::closing_progress() const
+  {
+    unsigned int  k = 0;
+    std::ifstream in(output + "/closing_progress.txt");
+    if (!(in >> k))
+      k = 0;
+    return k;
+  }
+
+  void PullSweepStudy::set_closing_progress(const unsigned int k) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      AtomicFile::write(output + "/closing_progress.txt",
+                        std::to_string(k) + "\n");
+  }
+
+  bool PullSweepStudy::restart_closing_below(
+      const unsigned int                             m,
+      const std::vector<std::optional<FeGripLevel>> &records) const
+  {
+    const std::string closing = output + "/fe_closing";
+    for (const char *name : {"checkpoint",
+                             "checkpoint.old",
+                             "checkpoint.new",
+                             "checkpoint.damaged"})
+      remove_on_root(comm, closing + "/" + name);
+    for (unsigned int j = m - 1; j >= 1; --j)
+      if (records[j - 1] && records[j - 1]->reached &&
+          records[j - 1]->state_level == j &&
+          std::filesystem::exists(level_directory(j) + "/closed/checkpoint"))
+      {
+        copy_checkpoint(comm, level_directory(j) + "/closed", closing);
+        set_closing_progress(j);
+        return true;
+      }
+    set_closing_progress(0);
+    return false;
+  }
+
   std::vector<FeGripLevel>
   PullSweepStudy::close_to_levels(const KinematicsData      &kinematics,
                                   const std::string         &grip_link,
                                   const std::vector<double> &forces,
                                   const double               step)
   {
-    std::vector<FeGripLevel> levels = recorded_levels(forces);
-    if (levels.size() == forces.size())
+    auto records = read_records(forces);
+    drop_shared(records);
+    const auto missing = std::find_if(
+        records.begin(), records.end(), [](const auto &r) { return !r; });
+    if (missing == records.end())
+    {
+      std::vector<FeGripLevel> levels;
+      for (auto &r : records)
+        levels.push_back(std::move(*r));
       return levels;
+    }
     const auto     &phase  = kinematics.phase("indentation");
     const auto      cut    = kinematics.slice(phase.start_time, phase.end_time);
     SolverInputs<3> inputs = arm_study.inputs_for(cut);
@@ -257,52 +366,84 @@ namespace softgrasp
       inputs.solver.time.minimum_step =
           std::min(step, inputs.solver.time.minimum_step);
     }
-    const auto [b, g] = IndentationStudy::link_index(
+    const auto grip = IndentationStudy::link_index(
         inputs.bodies, grip_link, "Grasp-and-pull sweep/Grip link");
 
-    // A killed sweep goes on from the closing's latest checkpoint.
+    // A killed sweep goes on from the closing's latest checkpoint, unless
+    // that may lie beyond the first level without a record (its record was
+    // deleted, or a later level has one): then from a state below it.
+    const unsigned int m     = missing - records.begin() + 1;
+    const bool         later = std::any_of(
+        missing, records.end(), [](const auto &r) { return r.has_value(); });
     bool started = false;
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      started = std::filesystem::exists(output + "/fe_closing/checkpoint") ||
-                std::filesystem::exists(output + "/fe_closing/checkpoint.old");
-    started = Utilities::MPI::broadcast(comm, started, 0);
-    for (std::size_t k = levels.size(); k < forces.size(); ++k)
+    if (later || closing_progress() >= m)
+      started = restart_closing_below(m, records);
+    else
     {
-      FeGripLevel level;
-      level.target_force = forces[k];
-      level.settings     = settings;
-      if (k > 0 &&
-          (!levels[k - 1].reached || levels[k - 1].reached_force >= forces[k]))
-      { // the state of the level below: it reaches this one too, or the
-        // closure ended below both
-        level.reached_force = levels[k - 1].reached_force;
-        level.time          = levels[k - 1].time;
-        level.reached       = levels[k - 1].reached;
-      }
-      else
-      {
-        inputs.solver.checkpoint.resume = started;
-        auto solver                     = Simulation<3>::create(comm, inputs);
-        solver->set_stop_criterion(
-            [&solver, b = b, g = g, target = forces[k]]()
-            {
-              const auto &latest = solver->contact_force_history().back();
-              return latest.forces[b][g].normal_force() >= target;
-            });
-        solver->run();
-        started             = true;
-        const auto &latest  = solver->contact_force_history().back();
-        level.reached_force = latest.forces[b][g].normal_force();
-        level.time          = latest.time;
-        level.reached       = solver->stopped_by_criterion();
-      }
-      if (level.reached)
-        copy_checkpoint(
-            comm, inputs.solver.output.directory, level_directory(k + 1));
-      record(level, k + 1);
-      levels.push_back(level);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        started =
+            std::filesystem::exists(output + "/fe_closing/checkpoint") ||
+            std::filesystem::exists(output + "/fe_closing/checkpoint.old");
+      started = Utilities::MPI::broadcast(comm, started, 0);
     }
+    std::vector<FeGripLevel> levels;
+    for (unsigned int k = 0; k < forces.size(); ++k)
+      levels.push_back(
+          records[k] ? std::move(*records[k])
+                     : close_one(inputs, grip, levels, forces, k, started));
     return levels;
+  }
+
+  FeGripLevel
+  PullSweepStudy::close_one(SolverInputs<3>                             &inputs,
+                            const std::pair<unsigned int, unsigned int> &grip,
+                            const std::vector<FeGripLevel>              &levels,
+                            const std::vector<double>                   &forces,
+                            const unsigned int                           k,
+                            bool &started) const
+  {
+    FeGripLevel level;
+    level.target_force = forces[k];
+    level.settings     = settings;
+    level.state_level  = k + 1;
+    if (k > 0 &&
+        (!levels[k - 1].reached || levels[k - 1].reached_force >= forces[k]))
+    { // the state of the level below: it reaches this one too, or the
+      // closure ended below both
+      level.reached_force = levels[k - 1].reached_force;
+      level.time          = levels[k - 1].time;
+      level.reached       = levels[k - 1].reached;
+      level.state_level   = levels[k - 1].state_level;
+      if (level.reached)
+        copy_checkpoint(comm,
+                        level_directory(level.state_level) + "/closed",
+                        level_directory(k + 1) + "/closed");
+    }
+    else
+    {
+      inputs.solver.checkpoint.resume = started;
+      auto solver                     = Simulation<3>::create(comm, inputs);
+      solver->set_stop_criterion(
+          [&solver, b = grip.first, g = grip.second, target = forces[k]]()
+          {
+            const auto &latest = solver->contact_force_history().back();
+            return latest.forces[b][g].normal_force() >= target;
+          });
+      solver->run();
+      started = true;
+      set_closing_progress(k + 1);
+      const auto &latest = solver->contact_force_history().back();
+      level.reached_force =
+          latest.forces[grip.first][grip.second].normal_force();
+      level.time    = latest.time;
+      level.reached = solver->stopped_by_criterion();
+      if (level.reached)
+        copy_checkpoint(comm,
+                        inputs.solver.output.directory,
+                        level_directory(k + 1) + "/closed");
+    }
+    record(level, k + 1);
+    return level;
   }
 
   void PullSweepStudy::pull(const KinematicsData &kinematics,
@@ -320,6 +461,14 @@ namespace softgrasp
     SolverInputs<3>      inputs     = arm_study.inputs_for(path);
     inputs.solver.output.directory  = level_directory(k);
     inputs.solver.checkpoint.resume = true;
+    // A pull not begun (or finished and its record deleted, to try again)
+    // starts from the level's closed state; a killed one goes on.
+    bool begun = false;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      begun = std::filesystem::exists(level_directory(k) + "/checkpoint") ||
+              std::filesystem::exists(level_directory(k) + "/checkpoint.old");
+    if (!Utilities::MPI::broadcast(comm, begun, 0))
+      copy_checkpoint(comm, level_directory(k) + "/closed", level_directory(k));
     inputs.add_resume_setting("Study/Sweep", "grasp-and-pull");
     if (friction >= 0) // the resume settings keep the closing's
       inputs.contact.friction_coefficient = friction;
@@ -342,6 +491,11 @@ namespace softgrasp
     for (auto &link : level.links)
       link = link.since(level.time);
     record(level, k);
+    for (const char *name : {"checkpoint",
+                             "checkpoint.old",
+                             "checkpoint.new",
+                             "checkpoint.damaged"})
+      remove_on_root(comm, level_directory(k) + "/" + name);
   }
 
   void write_grip_level(const FeGripLevel &level, const std::string &filename)
@@ -362,6 +516,7 @@ namespace softgrasp
                         file.attribute("failure", "failure: " + level.failure);
                         file.attribute("balance", level.balance);
                         file.attribute("penetration", level.penetration);
+                        file.attribute("state_level", int(level.state_level));
                         file.attribute("links", int(level.links.size()));
                         for (std::size_t i = 0; i < level.links.size(); ++i)
                         {
@@ -383,23 +538,39 @@ namespace softgrasp
     FeGripLevel level;
     Hdf5Record::read(
         filename,
-        "delete it (and its level's directory) to compute the level again",
+        "delete it (or its level's directory) to compute the level again: a "
+        "level without level.h5 is pulled again from its closed state, one "
+        "without closing.h5 closed again from the level below",
         [&](const Hdf5Record::Reader &file)
         {
+          // every number of a record is finite and none is negative
           const auto number = [&](const std::string &name)
-          { return file.number_attribute("", name); };
+          {
+            const double value = file.number_attribute("", name);
+            if (!(value >= 0) || !std::isfinite(value))
+              throw std::runtime_error("its attribute '" + name + "' is " +
+                                       std::to_string(value));
+            return value;
+          };
           if (file.string_attribute("", "schema") != "softgrasp grip level")
             throw std::runtime_error("it is not a grip level record");
-          level.settings      = file.string_attribute("", "settings");
-          level.target_force  = number("target_force");
-          level.reached_force = number("reached_force");
-          level.time          = number("time");
-          level.reached       = number("reached") != 0;
-          level.pulled        = number("pulled") != 0;
-          level.failure       = file.string_attribute("", "failure").substr(9);
-          level.balance       = number("balance");
-          level.penetration   = number("penetration");
-          const int n         = static_cast<int>(number("links"));
+          level.settings            = file.string_attribute("", "settings");
+          level.target_force        = number("target_force");
+          level.reached_force       = number("reached_force");
+          level.time                = number("time");
+          level.reached             = number("reached") != 0;
+          level.pulled              = number("pulled") != 0;
+          const std::string failure = file.string_attribute("", "failure");
+          if (failure.rfind("failure: ", 0) != 0)
+            throw std::runtime_error("its attribute 'failure' is damaged");
+          level.failure     = failure.substr(9);
+          level.balance     = number("balance");
+          level.penetration = number("penetration");
+          level.state_level = file.has_attribute("/", "state_level")
+                                  ? static_cast<unsigned int>(
+                                        std::max(0.0, number("state_level")))
+                                  : 0;
+          const int n       = static_cast<int>(number("links"));
           for (int i = 0; i < n; ++i)
           {
             const std::string group = "link_" + std::to_string(i);
@@ -412,13 +583,11 @@ namespace softgrasp
               throw std::runtime_error("link " + link.link +
                                        " has datasets of different lengths");
             for (const auto &[name, values] : series(link))
-            {
-              *values = file.vector(group + "/" + name);
-              if (values->size() != m)
+              *values = file.table(group + "/" + name, m, 1);
+            for (const double f : force)
+              if (!std::isfinite(f))
                 throw std::runtime_error("link " + link.link +
-                                         " has datasets of different "
-                                         "lengths");
-            }
+                                         " has a force of NaN or inf");
             for (std::size_t j = 0; j < m; ++j)
               link.force.emplace_back(
                   force[3 * j], force[3 * j + 1], force[3 * j + 2]);

@@ -292,6 +292,14 @@ namespace softgrasp
         throw ReadError(Kind::missing, "has no group '" + absolute(path) + "'");
     }
 
+    bool Reader::has_attribute(const std::string &object,
+                               const std::string &name) const
+    {
+      return has(object) &&
+             H5Aexists_by_name(
+                 file, absolute(object).c_str(), name.c_str(), H5P_DEFAULT) > 0;
+    }
+
     std::string Reader::string_attribute(const std::string &object,
                                          const std::string &name) const
     {

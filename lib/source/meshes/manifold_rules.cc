@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/manifold_lib.h>
+#include <limits>
 #include <set>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/meshes/manifold_rules.h>
@@ -103,7 +104,14 @@ namespace softgrasp
       else
         throw InputError(problem + "has the unknown kind '" + kind +
                          "'. Fix: use sphere, cylinder or transfinite.");
+      for (unsigned int k = 0; k < rules.size(); ++k)
+        if (rules[k].target == rule.target && rules[k].id == rule.id)
+          throw InputError("Parameter '" + path + "': the rules '" + texts[k] +
+                           "' and '" + Utilities::trim(entry) + "' both give " +
+                           target + " id " + std::to_string(rule.id) +
+                           " a manifold. Fix: keep one of them.");
       rules.push_back(rule);
+      texts.push_back(Utilities::trim(entry));
     }
   }
 
@@ -133,6 +141,10 @@ namespace softgrasp
         named_boundaries.insert(rule.id);
     }
     for (unsigned int k = 0; k < rules.size(); ++k)
+      if (rules[k].target == Rule::Target::boundary &&
+          rules[k].kind != Rule::Kind::transfinite)
+        check_fit(tria, k);
+    for (unsigned int k = 0; k < rules.size(); ++k)
       if (rules[k].target == Rule::Target::material)
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->material_id() == rules[k].id)
@@ -150,6 +162,51 @@ namespace softgrasp
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary() && face->boundary_id() == rules[k].id)
               face->set_all_manifold_ids(k);
+  }
+
+  template <int dim>
+  void ManifoldRules<dim>::check_fit(const Triangulation<dim> &tria,
+                                     const unsigned int        k) const
+  {
+    const Rule &rule = rules[k];
+    // distance of x from the centre (sphere) or from the axis (cylinder)
+    const auto radius = [&rule](const Point<dim> &x)
+    {
+      Tensor<1, dim> d = x - rule.point;
+      if (rule.kind == Rule::Kind::cylinder)
+        d -= (d * rule.axis) * rule.axis;
+      return d.norm();
+    };
+    double worst = 0, worst_size = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == rule.id)
+        {
+          double lo = std::numeric_limits<double>::max(), hi = 0;
+          for (const unsigned int v : face->vertex_indices())
+          {
+            lo = std::min(lo, radius(face->vertex(v)));
+            hi = std::max(hi, radius(face->vertex(v)));
+          }
+          const double size = face->diameter();
+          if ((hi - lo) / 2 > 0.01 * size &&
+              (hi - lo) / 2 / size > worst / std::max(worst_size, 1e-300))
+            worst = (hi - lo) / 2, worst_size = size;
+        }
+    if (worst > 0)
+    {
+      std::ostringstream message;
+      message << "Parameter '" << path << "': the rule '" << texts[k]
+              << "' does not fit the mesh: a face of boundary id " << rule.id
+              << " has vertices " << worst << " m from the "
+              << (rule.kind == Rule::Kind::sphere ? "sphere" : "cylinder")
+              << " through them (the face is " << worst_size
+              << " m across; allowed: 1 % of that). Fix: give the "
+              << (rule.kind == Rule::Kind::sphere ? "centre" : "axis")
+              << " in the mesh file's coordinates times 'Scale' (m), or the "
+                 "id of the curved surface.";
+      throw InputError(message.str());
+    }
   }
 
   template <int dim>

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <softgrasp/base/atomic_file.h>
@@ -315,15 +316,18 @@ namespace softgrasp
         {
           if (file.string_attribute("", "schema") != "softgrasp rigid sweep")
             throw std::runtime_error("it is not a rigid sweep record");
-          record.settings               = file.string_attribute("", "settings");
-          record.friction               = file.number_attribute("", "friction");
-          record.targets                = file.vector("targets");
-          const auto        level       = file.vector("grip_link/level");
-          const auto        grip        = file.vector("grip_link/grip_force");
-          const auto        normal      = file.vector("grip_link/normal_mean");
-          const auto        lateral     = file.vector("grip_link/lateral_mean");
-          const auto        lateral_max = file.vector("grip_link/lateral_max");
-          const std::size_t n           = level.size();
+          record.settings = file.string_attribute("", "settings");
+          record.friction = file.number_attribute("", "friction");
+          if (!(record.friction >= 0) || !std::isfinite(record.friction))
+            throw std::runtime_error("its friction coefficient is " +
+                                     std::to_string(record.friction));
+          record.targets         = file.table("targets", 0, 1);
+          const auto level       = file.table("grip_link/level", 0, 1);
+          const auto grip        = file.table("grip_link/grip_force", 0, 1);
+          const auto normal      = file.table("grip_link/normal_mean", 0, 1);
+          const auto lateral     = file.table("grip_link/lateral_mean", 0, 1);
+          const auto lateral_max = file.table("grip_link/lateral_max", 0, 1);
+          const std::size_t n    = level.size();
           if (grip.size() != n || normal.size() != n || lateral.size() != n ||
               lateral_max.size() != n)
             throw std::runtime_error(

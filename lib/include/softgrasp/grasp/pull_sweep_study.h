@@ -1,6 +1,7 @@
 #ifndef softgrasp_grasp_pull_sweep_study_h
 #define softgrasp_grasp_pull_sweep_study_h
 
+#include <optional>
 #include <softgrasp/grasp/arm_grasp_study.h>
 #include <softgrasp/grasp/link_force_history.h>
 #include <string>
@@ -18,6 +19,10 @@ namespace softgrasp
     bool        pulled        = false; ///< the pull ran to its end
     std::string failure;               ///< why the pull stopped, if it did
     std::string settings; ///< PullSweepStudy::settings_text() of its run
+    /// The level (1-based) whose closed state this one is: itself, or the
+    /// level below when the closing reached both in one state (or neither);
+    /// 0 in records of older sweeps (taken as its own).
+    unsigned int state_level = 0;
     /// At the end of the pull: |sum F_links - R| / max |F_link| and the
     /// deepest penetration of a link (m).
     double balance = 0, penetration = 0;
@@ -46,17 +51,22 @@ namespace softgrasp
    *
    *  - close_to_levels(): one run along the recorded indentation phase
    *    (directory <output>/fe_closing) stops at the first record where the
-   *    grip link's normal force reaches each level's force; its checkpoint
-   *    there is copied to <output>/level_<k>/checkpoint, and the run goes
-   *    on to the next level from it. Every level gets a record
-   *    (record_file()). A killed sweep reads the records and goes on from
-   *    the closing's latest checkpoint; levels with a record are not closed
-   *    again.
-   *  - pull(k): from level k's checkpoint (directory <output>/level_<k>),
+   *    grip link's normal force reaches each level's force; its state there
+   *    is kept in <output>/level_<k>/closed/checkpoint and the level's
+   *    closing record in closing_file(k); the run goes on to the next level
+   *    from it. A killed sweep goes on from the closing's latest
+   *    checkpoint; a level whose closing record is gone (deleted, damaged)
+   *    is closed again from the closed state of the nearest level below it
+   *    (or from the start), never from a later state, together with the
+   *    levels that share its state.
+   *  - pull(k): from level k's closed state (directory <output>/level_<k>),
    *    every link moves on the recorded pull phase's motion, relative to
    *    where the pull started, applied to the link's pose at the level
    *    (the finger joints hold the level's closure; the base slides); the
-   *    humerus stays fixed.
+   *    humerus stays fixed. A killed pull resumes from its own latest
+   *    checkpoint; a finished one writes record_file(k) and removes its
+   *    checkpoints, so that deleting the record pulls the level again from
+   *    its closed state.
    *
    * It is composed of the arm grasp (arm()), whose tissue, solver settings
    * and rigid scene it uses; it does not extend it.
@@ -95,9 +105,10 @@ namespace softgrasp
               FeGripLevel          &level,
               const double          friction = -1);
 
-    /// Every parameter but 'Output/...' as "path = value" lines: what the
-    /// results of a sweep depend on. Records carry it; a record of other
-    /// settings is refused.
+    /// Every parameter but 'Output/...' and 'Checkpoint/...' as
+    /// "path = value" lines: what the results of a sweep depend on.
+    /// Records carry it; a record of other settings is refused, but for
+    /// the time steps (numerical settings of what is still to compute).
     const std::string &settings_text() const
     {
       return settings;
@@ -106,20 +117,48 @@ namespace softgrasp
     /// <output>/level_<k> (k 1-based, two digits).
     std::string level_directory(const unsigned int k) const;
 
-    /// The record of level @p k: <output>/level_<k>/level.h5, written when
-    /// the closing reaches the level (or cannot) and again after its pull.
+    /// The record of level @p k after its pull: <output>/level_<k>/level.h5.
     std::string record_file(const unsigned int k) const;
 
+    /// The record of level @p k's closing: <output>/level_<k>/closing.h5.
+    std::string closing_file(const unsigned int k) const;
+
     /// The records of the first levels of @p forces (N) that have one, in
-    /// order up to the first without; an InputError if a record is damaged
-    /// or was closed to another force.
+    /// order up to the first without; an InputError if a record is damaged,
+    /// of other settings, or was closed to another force.
     std::vector<FeGripLevel>
     recorded_levels(const std::vector<double> &forces) const;
 
-    /// Write @p level as level @p k's record (rank 0; all ranks wait).
+    /// Write @p level as level @p k's record (rank 0; all ranks wait):
+    /// its closing record, or, once pulled (or failed), its full record.
     void record(const FeGripLevel &level, const unsigned int k) const;
 
   private:
+    /// Every level's record (the full one, else the closing one), or none.
+    std::vector<std::optional<FeGripLevel>>
+    read_records(const std::vector<double> &forces) const;
+    /// Drop the records of the levels that share the state of a level
+    /// without one (they are closed again together), with their files.
+    void drop_shared(std::vector<std::optional<FeGripLevel>> &records) const;
+    /// Point the closing at a state below level @p m's force: the closed
+    /// state of the nearest level below that owns one, or the start;
+    /// returns whether a state is there to resume from.
+    bool restart_closing_below(
+        const unsigned int                             m,
+        const std::vector<std::optional<FeGripLevel>> &records) const;
+    /// The highest level the closing's latest checkpoint may have passed
+    /// (<output>/closing_progress.txt; 0 if none), and its update.
+    unsigned int closing_progress() const;
+    void         set_closing_progress(const unsigned int k) const;
+    /// Close to level @p k (0-based) of @p forces from where the closing
+    /// is; @p levels holds the levels below it.
+    FeGripLevel close_one(SolverInputs<3>                             &inputs,
+                          const std::pair<unsigned int, unsigned int> &grip,
+                          const std::vector<FeGripLevel>              &levels,
+                          const std::vector<double>                   &forces,
+                          const unsigned int                           k,
+                          bool &started) const;
+
     MPI_Comm      comm;
     ArmGraspStudy arm_study;
     std::string   output;   ///< the study's 'Output/Directory'

@@ -124,6 +124,9 @@ namespace softgrasp
       bool has(const std::string &path) const;
       /// Throws ReadError::missing unless the group @p path exists.
       void require_group(const std::string &path) const;
+      /// Whether @p object has the attribute @p name.
+      bool has_attribute(const std::string &object,
+                         const std::string &name) const;
       /// The string attribute @p name of @p object.
       std::string string_attribute(const std::string &object,
                                    const std::string &name) const;

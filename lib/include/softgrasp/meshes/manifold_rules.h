@@ -57,7 +57,9 @@ namespace softgrasp
     }
     /// Set the manifold ids (rule k gets id k) on a coarse mesh read from a
     /// file; an id that the mesh does not have is an InputError listing
-    /// the ids it has.
+    /// the ids it has, and so is a sphere or cylinder rule on boundary
+    /// faces that do not lie on such a surface around its centre or axis
+    /// (check_fit()).
     void set_manifold_ids(dealii::Triangulation<dim> &triangulation) const;
     /// Attach the manifolds for the mesh moved by @p placement.
     void attach(dealii::Triangulation<dim> &triangulation,
@@ -69,8 +71,16 @@ namespace softgrasp
     }
 
   private:
-    std::vector<Rule> rules;
-    std::string       path;
+    /// Every face of boundary rule @p k (sphere or cylinder) must have its
+    /// vertices at one distance from the centre (axis), within 1 % of the
+    /// face's size; an InputError naming the rule, the id, the largest
+    /// distance of a vertex from its face's surface and the fix otherwise.
+    void check_fit(const dealii::Triangulation<dim> &triangulation,
+                   const unsigned int                k) const;
+
+    std::vector<Rule>        rules;
+    std::vector<std::string> texts; ///< each rule as written
+    std::string              path;
   };
 } // namespace softgrasp
 
