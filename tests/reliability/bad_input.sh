@@ -64,6 +64,12 @@ with_prm base.prm typo.prm Time "set End tim = 1"
 refused typo "No entry with name <End tim> was declared"
 with_prm base.prm unknown-model.prm Materials "subsection Material 0" "set Model = neo-hooke" end
 refused unknown-model "neo-hooke"
+# Constants far outside any tissue's (a modulus in MPa typed as Pa, ...):
+# the run goes on, with a warning that names the material and the unit.
+with_prm base.prm tiny-modulus.prm Materials "subsection Material 0" \
+  "subsection neo-Hookean" "set Shear modulus = 1e-3" end end
+run_expect 0 tiny-modulus.log "$exe" tiny-modulus.prm
+expect_message tiny-modulus.log "Warning: Material 0 (soft tissue) has an initial shear modulus of 0.001 Pa, far outside any tissue's"
 
 # Runs too large for the machine, or with millions of steps: refused up
 # front with an estimate, unless the user overrides the check.

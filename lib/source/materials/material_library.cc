@@ -284,6 +284,32 @@ namespace softgrasp
     return ids;
   }
 
+  std::vector<std::string> MaterialLibrary::implausible_constants() const
+  {
+    std::vector<std::string> lines;
+    for (const auto &[id, material] : materials)
+    {
+      const double      mu  = material->initial_shear_modulus();
+      const double      rho = material->density();
+      const std::string who = "Material " +
+                              std::to_string(static_cast<unsigned int>(id)) +
+                              " (" + material->name() + ")";
+      std::ostringstream line;
+      if (!(mu >= 1 && mu <= 1e10))
+        line << who << " has an initial shear modulus of " << mu
+             << " Pa, far outside any tissue's (soft tissues about 100 Pa to "
+                "10 MPa, cortical bone about 5 GPa): check its unit (Pa, not "
+                "kPa or MPa).";
+      else if (!(rho >= 100 && rho <= 1e4))
+        line << who << " has a density of " << rho
+             << " kg/m^3, far outside any tissue's (about 1000 to 2000 "
+                "kg/m^3): check its unit (kg/m^3, not g/cm^3).";
+      if (!line.str().empty())
+        lines.push_back(line.str());
+    }
+    return lines;
+  }
+
   void MaterialLibrary::set(const types::material_id        id,
                             std::shared_ptr<const Material> material)
   {

@@ -239,6 +239,8 @@ namespace softgrasp
     for (const auto id : material_library.material_ids())
       pcout << "Material " << static_cast<unsigned>(id) << ": "
             << material_library.get(id).summary() << std::endl;
+    for (const auto &line : material_library.implausible_constants())
+      pcout << "Warning: " << line << std::endl;
   }
 
   template <int dim>

@@ -97,6 +97,16 @@ namespace softgrasp
 
     std::vector<dealii::types::material_id> material_ids() const;
 
+    /**
+     * One line per material whose constants lie far outside any tissue's
+     * (initial shear modulus outside 1 Pa to 10 GPa: soft tissues have
+     * about 100 Pa to 10 MPa, cortical bone about 5 GPa; density outside
+     * 100 to 10000 kg/m^3), naming the material, the value and the likely
+     * cause (a unit); empty if none. Such a run is not refused: a user may
+     * mean it, but its results rarely are what was meant.
+     */
+    std::vector<std::string> implausible_constants() const;
+
     /// Add or replace the material of @p id (for programs that build in code).
     void set(const dealii::types::material_id id,
              std::shared_ptr<const Material>  material);
