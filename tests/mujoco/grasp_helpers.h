@@ -4,10 +4,12 @@
 #ifndef softgrasp_tests_grasp_helpers_h
 #define softgrasp_tests_grasp_helpers_h
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <softgrasp/grasp/arm_grasp_study.h>
 #include <softgrasp/grasp/indentation_study.h>
+#include <softgrasp/grasp/pull_sweep_study.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
 #include <softgrasp/mujoco/grasp_pull_sweep.h>
 #include <softgrasp/solvers/solver_program.h>
@@ -123,6 +125,33 @@ namespace softgrasp_tests
     p.parse_parameters(prm, PARAMETER_FILES);
     return p;
   }
+  /// The largest difference between two grip levels' link force
+  /// histories, relative to the largest force (0 if equal); 1 if their
+  /// grip (force, time) or shapes differ.
+  inline double level_difference(const softgrasp::FeGripLevel &a,
+                                 const softgrasp::FeGripLevel &b)
+  {
+    if (a.links.size() != b.links.size() || a.pulled != b.pulled ||
+        a.reached_force != b.reached_force || a.time != b.time)
+      return 1;
+    double largest = 1e-12, diff = 0;
+    for (std::size_t l = 0; l < a.links.size(); ++l)
+    {
+      const auto &x = a.links[l], &y = b.links[l];
+      if (x.link != y.link || x.time.size() != y.time.size())
+        return 1;
+      for (std::size_t i = 0; i < x.time.size(); ++i)
+      {
+        largest = std::max(largest, x.force[i].norm());
+        diff    = std::max({diff,
+                            (x.force[i] - y.force[i]).norm(),
+                            std::abs(x.friction[i] - y.friction[i]),
+                            std::abs(x.nodal_normal[i] - y.nodal_normal[i])});
+      }
+    }
+    return diff / largest;
+  }
+
 } // namespace softgrasp_tests
 
 #endif

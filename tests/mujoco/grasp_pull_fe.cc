@@ -30,31 +30,6 @@ using softgrasp_tests::CoarseSweep;
 
 namespace
 {
-  /// The largest difference between two levels' link force histories,
-  /// relative to the largest force (0 if equal); 1 if their shapes differ.
-  double difference(const FeGripLevel &a, const FeGripLevel &b)
-  {
-    if (a.links.size() != b.links.size() || a.pulled != b.pulled ||
-        a.reached_force != b.reached_force)
-      return 1;
-    double largest = 1e-12, diff = 0;
-    for (std::size_t l = 0; l < a.links.size(); ++l)
-    {
-      const auto &x = a.links[l], &y = b.links[l];
-      if (x.link != y.link || x.time.size() != y.time.size())
-        return 1;
-      for (std::size_t i = 0; i < x.time.size(); ++i)
-      {
-        largest = std::max(largest, x.force[i].norm());
-        diff    = std::max({diff,
-                            (x.force[i] - y.force[i]).norm(),
-                            std::abs(x.friction[i] - y.friction[i]),
-                            std::abs(x.nodal_normal[i] - y.nodal_normal[i])});
-      }
-    }
-    return diff / largest;
-  }
-
   void check_physics(const std::vector<FeGripLevel> &levels, const double mu)
   {
     SG_CHECK(levels.size() == 2, "two levels");
@@ -107,8 +82,9 @@ main(int argc, char **argv)
              "the rigid stage's record is reused");
     s.sweep->collect(s.log);
     const auto &read = s.sweep->fe_levels();
-    SG_CHECK(read.size() == 2 && difference(read[0], full[0]) == 0 &&
-                 difference(read[1], full[1]) == 0,
+    SG_CHECK(read.size() == 2 &&
+                 softgrasp_tests::level_difference(read[0], full[0]) == 0 &&
+                 softgrasp_tests::level_difference(read[1], full[1]) == 0,
              "collect reads the levels back");
   }
   dealii::deallog << "collect: the levels read back from their records"
@@ -119,7 +95,7 @@ main(int argc, char **argv)
     s.sweep->pull(2, s.log);
     const auto &alone = s.sweep->fe_levels();
     SG_CHECK(alone.size() == 2 && !alone[0].pulled, "only level 2 pulled");
-    SG_CHECK(difference(alone[1], full[1]) < 1e-9,
+    SG_CHECK(softgrasp_tests::level_difference(alone[1], full[1]) < 1e-9,
              "level 2 alone equals level 2 of the sweep");
   }
   dealii::deallog << "--level 2 alone: level 2 of the whole sweep" << std::endl;
@@ -138,8 +114,10 @@ main(int argc, char **argv)
                  s.log.str().find("Level 1: finished") != std::string::npos,
              "level 1 is not run again");
     const auto &resumed = s.sweep->fe_levels();
-    SG_CHECK(resumed.size() == 2 && difference(resumed[0], full[0]) < 1e-9 &&
-                 difference(resumed[1], full[1]) < 1e-9,
+    SG_CHECK(resumed.size() == 2 &&
+                 softgrasp_tests::level_difference(resumed[0], full[0]) <
+                     1e-9 &&
+                 softgrasp_tests::level_difference(resumed[1], full[1]) < 1e-9,
              "the resumed sweep equals the uninterrupted one");
   }
   dealii::deallog << "resumed after level 1: level 1 not run again, both "

@@ -21,31 +21,6 @@
 using namespace softgrasp;
 using softgrasp_tests::CoarseSweep;
 
-namespace
-{
-  /// The largest difference of two levels' link forces over the pull,
-  /// relative to the largest force; 1 if their grip or shapes differ.
-  double difference(const FeGripLevel &a, const FeGripLevel &b)
-  {
-    if (a.links.size() != b.links.size() || a.pulled != b.pulled ||
-        a.reached_force != b.reached_force || a.time != b.time)
-      return 1;
-    double largest = 1e-12, diff = 0;
-    for (std::size_t l = 0; l < a.links.size(); ++l)
-    {
-      const auto &x = a.links[l], &y = b.links[l];
-      if (x.link != y.link || x.time.size() != y.time.size())
-        return 1;
-      for (std::size_t i = 0; i < x.time.size(); ++i)
-      {
-        largest = std::max(largest, x.force[i].norm());
-        diff    = std::max(diff, (x.force[i] - y.force[i]).norm());
-      }
-    }
-    return diff / largest;
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
@@ -64,14 +39,13 @@ main(int argc, char **argv)
              "two levels of distinct states, pulled");
   }
   const auto level_record = [&](const unsigned int k)
-  {
-    return directory + "/level_0" + std::to_string(k) + "/level.h5";
-  };
+  { return directory + "/level_0" + std::to_string(k) + "/level.h5"; };
 
   {
     CoarseSweep s(directory,
-                  [](dealii::ParameterHandler &prm)
-                  { softgrasp_tests::set(prm, {"Checkpoint"}, "Interval", "7"); });
+                  [](dealii::ParameterHandler &prm) {
+                    softgrasp_tests::set(prm, {"Checkpoint"}, "Interval", "7");
+                  });
     s.sweep->run_fe(s.log);
     SG_CHECK(s.log.str().find("Level 1: finished") != std::string::npos &&
                  s.log.str().find("Level 2: finished") != std::string::npos,
@@ -85,8 +59,9 @@ main(int argc, char **argv)
     const auto closing = fs::last_write_time(directory + "/fe_closing");
     fs::remove(level_record(1));
     CoarseSweep s(directory,
-                  [](dealii::ParameterHandler &prm)
-                  { softgrasp_tests::set(prm, {"Time"}, "Time step", "0.01"); });
+                  [](dealii::ParameterHandler &prm) {
+                    softgrasp_tests::set(prm, {"Time"}, "Time step", "0.01");
+                  });
     s.sweep->run_fe(s.log);
     const auto &levels = s.sweep->fe_levels();
     SG_CHECK(levels.size() == 2 && levels[0].pulled &&
@@ -111,7 +86,8 @@ main(int argc, char **argv)
     s.sweep->run_fe(s.log);
     const auto &levels = s.sweep->fe_levels();
     SG_CHECK(levels.size() == 2, "two levels");
-    SG_CHECK(difference(levels[k - 1], full[k - 1]) < 1e-9,
+    SG_CHECK(softgrasp_tests::level_difference(levels[k - 1], full[k - 1]) <
+                 1e-9,
              "level " + std::to_string(k) +
                  " closed again from below equals the first sweep's");
     SG_CHECK(fs::last_write_time(level_record(other)) == before,
