@@ -242,6 +242,23 @@ namespace softgrasp
         return Handle(attribute, H5Aclose);
       }
 
+      /// The @p n values of the dataset @p set (named @p where in errors).
+      std::vector<double>
+      read_values(const hid_t set, const hsize_t n, const std::string &where)
+      {
+        std::vector<double> values(n);
+        if (n > 0 && H5Dread(set,
+                             H5T_NATIVE_DOUBLE,
+                             H5S_ALL,
+                             H5S_ALL,
+                             H5P_DEFAULT,
+                             values.data()) < 0)
+          throw ReadError(Kind::damaged,
+                          "has an unreadable dataset " + where +
+                              " (the file is damaged or truncated)");
+        return values;
+      }
+
       /// The string value of @p attribute (fixed or variable length).
       std::string read_string(const hid_t attribute, const hid_t type)
       {
@@ -344,17 +361,8 @@ namespace softgrasp
         throw ReadError(Kind::wrong_shape,
                         "has the dataset '" + absolute(path) +
                             "' that is not one-dimensional");
-      std::vector<double> values(H5Sget_simple_extent_npoints(space));
-      if (!values.empty() && H5Dread(set,
-                                     H5T_NATIVE_DOUBLE,
-                                     H5S_ALL,
-                                     H5S_ALL,
-                                     H5P_DEFAULT,
-                                     values.data()) < 0)
-        throw ReadError(Kind::damaged,
-                        "has an unreadable dataset '" + absolute(path) +
-                            "' (the file is damaged or truncated)");
-      return values;
+      return read_values(
+          set, H5Sget_simple_extent_npoints(space), "'" + absolute(path) + "'");
     }
 
     std::vector<double> Reader::table(const std::string &path,
@@ -379,16 +387,8 @@ namespace softgrasp
                 (rank == 2 ? " x " + std::to_string(dims[1]) : "") +
                 ", expected " + (rows > 0 ? std::to_string(rows) : "n") +
                 (columns > 1 ? " x " + std::to_string(columns) : ""));
-      std::vector<double> values(dims[0] * columns);
-      if (!values.empty() && H5Dread(set,
-                                     H5T_NATIVE_DOUBLE,
-                                     H5S_ALL,
-                                     H5S_ALL,
-                                     H5P_DEFAULT,
-                                     values.data()) < 0)
-        throw ReadError(Kind::damaged,
-                        "has an unreadable dataset " + where +
-                            " (the file is damaged or truncated)");
+      const std::vector<double> values =
+          read_values(set, dims[0] * columns, where);
       for (std::size_t i = 0; i < values.size(); ++i)
         if (!std::isfinite(values[i]))
           throw ReadError(Kind::not_finite,
