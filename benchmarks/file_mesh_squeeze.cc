@@ -67,6 +67,9 @@ main(int argc, char **argv)
   }
   const std::string  base = softgrasp_tests::problem_text(argv[1]);
   const unsigned int max  = argc > 2 ? std::stoi(argv[2]) : 1;
+  // the file meshes without the ball generator's entries (refused)
+  const std::string file_base =
+      softgrasp_tests::without_subsection(base, "Ball");
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
   {
     softgrasp_tests::write_ball_octant(1, "octant_32.msh");
@@ -81,13 +84,13 @@ main(int argc, char **argv)
     run(base,
         "generated curved, refinements " + std::to_string(r + 2),
         " set Global refinements = " + std::to_string(r + 2) + "\n");
-    run(base,
+    run(file_base,
         "256-cell file, flat, refinements " + level,
         softgrasp_tests::ball_octant_file_mesh("octant_256.msh", r, false));
-    run(base,
+    run(file_base,
         "256-cell file, manifolds, refinements " + level,
         softgrasp_tests::ball_octant_file_mesh("octant_256.msh", r, true));
-    run(base,
+    run(file_base,
         "32-cell file, manifolds, refinements " + std::to_string(r + 1),
         softgrasp_tests::ball_octant_file_mesh("octant_32.msh", r + 1, true));
   }

@@ -27,6 +27,31 @@ namespace softgrasp_tests
     return text + overrides;
   }
 
+  /// @p text without the subsection @p name (at any depth, with its
+  /// content): a mesh type's entries when the test switches 'Mesh/Type'.
+  inline std::string without_subsection(const std::string &text,
+                                        const std::string &name)
+  {
+    std::istringstream in(text);
+    std::string        kept, line;
+    int                depth = 0; // inside the removed subsection
+    while (std::getline(in, line))
+    {
+      const auto        first = line.find_first_not_of(' ');
+      const std::string word =
+          first == std::string::npos ? "" : line.substr(first);
+      if (depth == 0 && word == "subsection " + name)
+        depth = 1;
+      else if (depth > 0 && word.rfind("subsection ", 0) == 0)
+        ++depth;
+      else if (depth > 0 && word == "end")
+        --depth;
+      else if (depth == 0)
+        kept += line + "\n";
+    }
+    return kept;
+  }
+
 #ifdef PROBLEM_DIR
   /// problem_text() of the shipped problem @p name.
   inline std::string problem(const std::string &name,

@@ -136,15 +136,16 @@ namespace
     SG_CHECK(close_to_generated, "as good as the generated curved mesh");
   }
 
-  void refused(const std::string &rules, const std::string &expected)
+  void refused(const std::string &rules,
+               const std::string &expected,
+               const std::string &file = "ball_octant.msh")
   {
     try
     {
       const auto factory = factory_from<3>(
           "file",
           "File",
-          "  set File name = ball_octant.msh\n  set Manifolds = " + rules +
-              "\n");
+          "  set File name = " + file + "\n  set Manifolds = " + rules + "\n");
       Triangulation<3> tria;
       factory.create_coarse_mesh(tria);
       SG_CHECK(false, "bad rules are refused");
@@ -223,4 +224,11 @@ main()
           "does not fit the mesh");
   refused("boundary 0: sphere 0, 0, 0; boundary 0: sphere 0, 0, 0",
           "both give boundary id 0");
+  // rules on cells: a sphere on the tube's cells, an axis 5 mm off, a
+  // sphere on the ball's core (whose edges run neither along nor across it)
+  refused("material 0: sphere 0.01, 0, 0", "nor points to it", "half_tube.msh");
+  refused("material 0: cylinder 1, 0, 0 through 0.01, 0.005, 0",
+          "nor points to it",
+          "half_tube.msh");
+  refused("material 0: sphere 0, 0, 0", "transfinite");
 }

@@ -58,6 +58,28 @@ with_prm base.prm corner.prm Mesh "subsection Block" "set Upper corner = 0.02, 0
 refused corner "'Mesh/Block/Upper corner' = '0.02, 0.02, 0.01, 5' needs 3"
 with_prm base.prm scale.prm Mesh "set Type = file" "subsection File" "set File name = x.msh" "set Scale = 0" end
 refused scale "'Mesh/File/Scale' is 0"
+# A mesh file that deal.II cannot parse: a clean message, no banner.
+printf '*Heading\n*Node\n1, 0, 0, 0\n2, 1, 0\n*Element, type=C3D8\n1, 1, 2, 3\n' > broken.inp
+sed '/^  subsection Block/,/^  end/d' base.prm > no-block.prm
+with_prm no-block.prm abaqus.prm Mesh "set Type = file" "subsection File" "set File name = broken.inp" end
+refused abaqus "The mesh file 'broken.inp' cannot be read as a 3D Abaqus mesh"
+# Entries of a mesh type that is not chosen would be ignored: refused.
+with_prm base.prm manifolds-on-block.prm Mesh "subsection File" "set Manifolds = boundary 0: sphere 0, 0, 0" end
+refused manifolds-on-block "'Mesh/Type' is 'block', but 'Mesh/File/Manifolds' belongs to mesh type 'file' and would be ignored"
+# A layered limb of absurd size (a unit typed wrong) or cell counts.
+limb() { local name=$1; shift
+  with_prm no-block.prm "$name.prm" Mesh "set Type = layered limb" "subsection Layered limb" "$@" end; }
+limb limb-mm "set Circumference = 342"
+refused limb-mm "'Mesh/Layered limb/Circumference' = 342 m lies outside the range of human limbs"
+expect_message limb-mm.log "'Mesh/Layered limb/Check human size = false'"
+limb limb-micro "set Length = 1e-6"
+refused limb-micro "'Mesh/Layered limb/Length' = 1e-06 m lies outside the range of human limbs"
+limb limb-growth "set Axial growth = 1e6"
+refused limb-growth "Mesh/Layered limb/Axial growth"
+limb limb-around "set Circumferential cells = 4000000"
+refused limb-around "[Integer range 8...4096 (inclusive)]"
+limb limb-huge "set Circumferential cells = 4096" "set Radial cells = 16, 16, 16, 64" "set Grasp zone cells = 4000"
+refused limb-huge "needs about"
 with_prm base.prm friction.prm Contact "set Friction coefficient = 30"
 refused friction "'Contact/Friction coefficient' = 30"
 with_prm base.prm typo.prm Time "set End tim = 1"
@@ -111,5 +133,7 @@ expect_message held-in-x.log "The last converged state (step 0, t = 0 s) was wri
 # is named whole and the message says it may belong to another program.
 printf 'subsection Rigid environment\n  set Scene file = hand.xml\nend\n' > study.prm
 refused study "Line <1> of file <study.prm>: There is no such subsection to be entered: Rigid environment"
-expect_message study.log "the file may be written for another softgrasp program"
+expect_message study.log "the file is written for a grasp study (sphere_squeeze, arm_grasp, grasp_pull_sweep or mujoco_grasp)"
+printf 'subsection Unknown part\n  set x = 1\nend\n' > unknown-part.prm
+refused unknown-part "the file may be written for another softgrasp program"
 echo "bad input: all cases passed"

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/base/parameter_reader.h>
 #include <sstream>
 
 namespace softgrasp
@@ -114,5 +115,26 @@ namespace softgrasp
          dealii::Utilities::split_string_list(prm.get(name), ','))
       values.push_back(parse_number(item, path_of(name)));
     return values;
+  }
+
+  std::vector<std::string> entries_changed_from_default(
+      dealii::ParameterHandler                              &prm,
+      const std::function<void(dealii::ParameterHandler &)> &declare)
+  {
+    dealii::ParameterHandler defaults;
+    declare(defaults);
+    std::vector<std::string> changed;
+    for (const auto &[path, default_value] : ParameterReader::flatten(defaults))
+    {
+      const auto parts = dealii::Utilities::split_string_list(path, '/');
+      for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+        prm.enter_subsection(parts[i]);
+      const std::string value = dealii::Utilities::trim(prm.get(parts.back()));
+      for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+        prm.leave_subsection();
+      if (value != default_value)
+        changed.push_back(path);
+    }
+    return changed;
   }
 } // namespace softgrasp

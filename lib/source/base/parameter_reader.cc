@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_reader.h>
@@ -13,6 +14,46 @@ namespace softgrasp
 
   namespace
   {
+    /// Top-level subsections that only some programs read, and which.
+    std::map<std::string, std::string> &program_sections()
+    {
+      static std::map<std::string, std::string> sections;
+      return sections;
+    }
+
+    /// The end of the message for a file deal.II cannot read: the fix, and
+    /// for "There is no such subsection to be entered: <name>" the program
+    /// the file belongs to.
+    std::string unreadable_file_advice(const std::string &message)
+    {
+      const std::string marker = "There is no such subsection to be entered";
+      const auto        at     = message.find(marker);
+      auto              colon  = message.find(':', at);
+      std::string       section =
+          at == std::string::npos || colon == std::string::npos
+                    ? ""
+                    : Utilities::trim(message.substr(colon + 1));
+      section          = section.substr(0, section.find('\n'));
+      const auto known = program_sections().find(Utilities::trim(section));
+      if (known != program_sections().end())
+        return " This program has no subsection '" + known->first +
+               "': the file is written for " + known->second +
+               ". Fix: run it with that program, or give this program "
+               "one of its own files (--print-parameters lists its "
+               "entries).";
+      const std::string fix =
+          " Fix: check the spelling and the allowed values; the programs "
+          "list every parameter with its documentation (see "
+          "doc/parameters/).";
+      if (at == std::string::npos)
+        return fix;
+      return " This program has no such subsection: the file may be "
+             "written for another softgrasp program (each program's "
+             "subsections are listed in doc/parameters/ and by "
+             "--print-parameters)." +
+             fix;
+    }
+
     struct Line
     {
       unsigned int number;
@@ -180,21 +221,17 @@ namespace softgrasp
       for (auto pos = message.find(open); pos != std::string::npos;
            pos      = message.find(open, pos + source.size() + 3))
         message.replace(pos, open.size(), "<" + source + ">:");
-      const bool foreign =
-          message.find("There is no such subsection to be entered") !=
-          std::string::npos;
-      throw InputError(
-          "The parameter file '" + source +
-          "' cannot be read: " + printable(Utilities::trim(message)) +
-          (foreign ? " This program has no such subsection: the file may be "
-                     "written for another softgrasp program (each program's "
-                     "subsections are listed in doc/parameters/ and by "
-                     "--print-parameters)."
-                   : "") +
-          " Fix: check the spelling and the allowed values; the programs "
-          "list every parameter with its documentation (see "
-          "doc/parameters/).");
+      throw InputError("The parameter file '" + source + "' cannot be read: " +
+                       printable(Utilities::trim(message)) +
+                       unreadable_file_advice(message));
     }
+  }
+
+  bool ParameterReader::register_program_section(const std::string &section,
+                                                 const std::string &programs)
+  {
+    program_sections()[section] = programs;
+    return true;
   }
 
   std::vector<std::pair<std::string, std::string>>

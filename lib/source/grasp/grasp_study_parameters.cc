@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/grasp/indentation_study.h>
 
 namespace softgrasp
@@ -83,3 +84,18 @@ namespace softgrasp
                        "body/geom, or set the force to 0.");
   }
 } // namespace softgrasp
+
+namespace
+{
+  // A file with this subsection given to another program names its program.
+  // (The rigid stage's subsection is read by the same programs, and by
+  // mujoco_grasp, which runs that stage alone.)
+  [[maybe_unused]] const bool softgrasp_program_sections =
+      softgrasp::ParameterReader::register_program_section(
+          "Indentation study",
+          "a grasp study (sphere_squeeze, arm_grasp or grasp_pull_sweep)") &&
+      softgrasp::ParameterReader::register_program_section(
+          "Rigid environment",
+          "a grasp study (sphere_squeeze, arm_grasp, grasp_pull_sweep or "
+          "mujoco_grasp)");
+} // namespace

@@ -6,6 +6,7 @@
 #include <softgrasp/base/atomic_file.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/grasp/limb_scene.h>
 #include <sstream>
 
@@ -159,3 +160,11 @@ namespace softgrasp
     return scene;
   }
 } // namespace softgrasp
+
+namespace
+{
+  // A file with this subsection given to another program names its program.
+  [[maybe_unused]] const bool softgrasp_program_section =
+      softgrasp::ParameterReader::register_program_section(
+          "Arm scene", "arm_grasp or grasp_pull_sweep");
+} // namespace

@@ -597,3 +597,11 @@ namespace softgrasp
     return level;
   }
 } // namespace softgrasp
+
+namespace
+{
+  // A file with this subsection given to another program names its program.
+  [[maybe_unused]] const bool softgrasp_program_section =
+      softgrasp::ParameterReader::register_program_section(
+          "Grasp-and-pull sweep", "grasp_pull_sweep");
+} // namespace

@@ -42,7 +42,7 @@ namespace softgrasp
                       "Corner with the largest coordinates. Unit: m.");
     prm.declare_entry("Subdivisions",
                       per_direction<dim>("2"),
-                      Patterns::List(Patterns::Integer(1)),
+                      Patterns::List(Patterns::Integer(1, 100000)),
                       "Elements per direction before refinement. Unit: 1.");
     prm.declare_entry("Grading",
                       per_direction<dim>("1"),
@@ -136,6 +136,14 @@ namespace softgrasp
                           fine_zone[1][d],
                           subdivisions[d],
                           grading[d]);
+  }
+
+  template <int dim> double BlockMesh<dim>::n_coarse_cells() const
+  {
+    double n = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n *= divisions(d).size() - 1;
+    return n;
   }
 
   template <int dim>

@@ -37,11 +37,11 @@ namespace softgrasp
     number("Aspect ratio",
            g.aspect_ratio,
            "Ratio of the cross-section's semi-axes b (local z) / a (local "
-           "y); 1 is circular. Unit: 1.");
+           "y); 1 is circular; 0.2 to 5. Unit: 1.");
     number("Taper",
            g.taper,
            "Circumference at the elbow end / at the shoulder end; 1 is "
-           "straight. Unit: 1.");
+           "straight; 0.2 to 5. Unit: 1.");
     number("Skin thickness", g.skin, "Epidermis and dermis. Unit: m.");
     number("Fat thickness",
            g.fat,
@@ -61,15 +61,15 @@ namespace softgrasp
                       "the axis with its own material id.");
     prm.declare_entry("Radial cells",
                       "1, 1, 1, 3",
-                      Patterns::List(Patterns::Integer(1), 4, 4),
+                      Patterns::List(Patterns::Integer(1, 256), 4, 4),
                       "Cells across skin, fat, fascia and muscle. Unit: 1.");
     number("Muscle grading",
            1.5,
            "Size ratio of neighbouring muscle cells from the fascia towards "
-           "the bone (> 1: finest under the fascia). Unit: 1.");
+           "the bone (> 1: finest under the fascia); 0.2 to 5. Unit: 1.");
     prm.declare_entry("Circumferential cells",
                       "24",
-                      Patterns::Integer(8),
+                      Patterns::Integer(8, 4096),
                       "Cells around the limb; a multiple of 4 (of 8 with a "
                       "solid bone). Unit: 1.");
     number("Grasp zone center",
@@ -81,12 +81,20 @@ namespace softgrasp
            "Length of that zone (uniform cells). Unit: m.");
     prm.declare_entry("Grasp zone cells",
                       "8",
-                      Patterns::Integer(1),
+                      Patterns::Integer(1, 10000),
                       "Axial cells in the grasp zone. Unit: 1.");
     number("Axial growth",
            1.3,
            "Size ratio of neighbouring axial cells from the zone towards "
-           "the ends (1: as in the zone). Unit: 1.");
+           "the ends (1: as in the zone); 1 to 3. Unit: 1.");
+    prm.declare_entry("Check human size",
+                      "true",
+                      Patterns::Bool(),
+                      "Refuse sizes outside those of human limbs (length "
+                      "0.03-1.2 m, circumference 0.08-1 m, skin 0.5-5 mm, "
+                      "fat up to 80 mm, fascia up to 3 mm, bone radius "
+                      "2-30 mm), which are usually a unit typed wrong; false "
+                      "for another animal's limb or a test piece.");
     prm.declare_entry("Material ids",
                       "1, 2, 3, 4, 5",
                       Patterns::List(Patterns::Integer(0, 254), 5, 5),
@@ -102,28 +110,32 @@ namespace softgrasp
     const CheckedSection s(prm, "Mesh/Layered limb");
     geometry.length        = s.get_positive("Length", "m");
     geometry.circumference = s.get_positive("Circumference", "m");
-    geometry.aspect_ratio  = s.get_positive("Aspect ratio", "1");
-    geometry.taper         = s.get_positive("Taper", "1");
-    geometry.skin          = s.get_positive("Skin thickness", "m");
-    geometry.fat           = s.get_positive("Fat thickness", "m", true);
-    geometry.fascia        = s.get_positive("Fascia thickness", "m", true);
-    geometry.bone_radius   = s.get_positive("Bone radius", "m");
+    // Ratios beyond these give cells too thin to compute with.
+    geometry.aspect_ratio = s.get_in_range("Aspect ratio", 0.2, 5, true, "1");
+    geometry.taper        = s.get_in_range("Taper", 0.2, 5, true, "1");
+    geometry.skin         = s.get_positive("Skin thickness", "m");
+    geometry.fat          = s.get_positive("Fat thickness", "m", true);
+    geometry.fascia       = s.get_positive("Fascia thickness", "m", true);
+    geometry.bone_radius  = s.get_positive("Bone radius", "m");
     bone             = prm.get("Bone") == "solid" ? Bone::solid : Bone::rigid;
     const auto cells = Utilities::split_string_list(prm.get("Radial cells"));
     for (unsigned int i = 0; i < 4; ++i)
       radial_cells[i] = Utilities::string_to_int(cells[i]);
-    muscle_grading        = s.get_positive("Muscle grading", "1");
+    muscle_grading        = s.get_in_range("Muscle grading", 0.2, 5, true, "1");
     circumferential_cells = prm.get_integer("Circumferential cells");
     zone_center           = s.get_number("Grasp zone center");
     zone_length           = s.get_positive("Grasp zone length", "m");
     zone_cells            = prm.get_integer("Grasp zone cells");
-    axial_growth          = s.get_positive("Axial growth", "1");
+    axial_growth          = s.get_in_range("Axial growth", 1, 3, true, "1");
+    const bool check_human_size = prm.get_bool("Check human size");
     const auto ids = Utilities::split_string_list(prm.get("Material ids"));
     for (unsigned int i = 0; i < 5; ++i)
       material_ids[i] = Utilities::string_to_int(ids[i]);
     prm.leave_subsection();
 
     geometry.check();
+    if (check_human_size)
+      geometry.check_human_size();
     const unsigned int multiple = bone == Bone::solid ? 8 : 4;
     if (circumferential_cells % multiple != 0)
       throw InputError(
@@ -165,6 +177,17 @@ namespace softgrasp
         level += 1;
       }
     return xi;
+  }
+
+  double LayeredLimb::n_coarse_cells() const
+  {
+    const double m = circumferential_cells / 4.0;
+    const double section =
+        (radial_nodes().size() - 1) * circumferential_cells +
+        (bone == Bone::solid
+             ? m * m + std::max(1.0, std::floor(m / 2)) * circumferential_cells
+             : 0.0);
+    return section * (axial_nodes().size() - 1);
   }
 
   std::vector<double> LayeredLimb::axial_nodes() const

@@ -60,6 +60,35 @@ namespace softgrasp
     }
   }
 
+  void LimbGeometry::check_human_size() const
+  {
+    // Ranges of human limb segments, from a newborn's forearm to an
+    // adult's thigh (skin: epidermis and dermis; fat: subcutaneous).
+    struct Range
+    {
+      const char *entry;
+      double      value, lower, upper;
+    };
+    const Range ranges[] = {{"Length", length, 0.03, 1.2},
+                            {"Circumference", circumference, 0.08, 1.0},
+                            {"Skin thickness", skin, 0.0005, 0.005},
+                            {"Fat thickness", fat, 0, 0.08},
+                            {"Fascia thickness", fascia, 0, 0.003},
+                            {"Bone radius", bone_radius, 0.002, 0.03}};
+    for (const Range &r : ranges)
+      if (r.value < r.lower || r.value > r.upper)
+      {
+        std::ostringstream what;
+        what << "'Mesh/Layered limb/" << r.entry << "' = " << r.value
+             << " m lies outside the range of human limbs (" << r.lower
+             << " to " << r.upper
+             << " m). Fix: give it in metres (a value in millimetres is "
+                "1000 times too large), or set 'Mesh/Layered limb/Check "
+                "human size = false' for a limb that is not human.";
+        throw InputError(what.str());
+      }
+  }
+
   namespace
   {
     /// The interfaces present (a layer of thickness 0 has none).

@@ -144,6 +144,8 @@ namespace softgrasp
       if (rules[k].target == Rule::Target::boundary &&
           rules[k].kind != Rule::Kind::transfinite)
         check_fit(tria, k);
+      else if (rules[k].kind != Rule::Kind::transfinite)
+        check_cells_fit(tria, k);
     for (unsigned int k = 0; k < rules.size(); ++k)
       if (rules[k].target == Rule::Target::material)
         for (const auto &cell : tria.active_cell_iterators())
@@ -207,6 +209,56 @@ namespace softgrasp
                  "id of the curved surface.";
       throw InputError(message.str());
     }
+  }
+
+  template <int dim>
+  void ManifoldRules<dim>::check_cells_fit(const Triangulation<dim> &tria,
+                                           const unsigned int        k) const
+  {
+    const Rule &rule = rules[k];
+    // x relative to the centre, or to the axis (its axial part removed)
+    const auto from_centre = [&rule](const Point<dim> &x)
+    {
+      Tensor<1, dim> d = x - rule.point;
+      if (rule.kind == Rule::Kind::cylinder)
+        d -= (d * rule.axis) * rule.axis;
+      return d;
+    };
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->material_id() == rule.id)
+        for (const unsigned int l : cell->line_indices())
+        {
+          const Point<dim>     a  = cell->line(l)->vertex(0);
+          const Point<dim>     b  = cell->line(l)->vertex(1);
+          const Tensor<1, dim> da = from_centre(a), db = from_centre(b);
+          const double         length = (b - a).norm();
+          const double         ra = da.norm(), rb = db.norm();
+          // off one sphere (cylinder) / off the ray from the centre (axis)
+          // through a, of b
+          const double tangential = std::abs(ra - rb);
+          const double radial     = ra > 0 && da * db > 0
+                                        ? (db - (db * da) / (ra * ra) * da).norm()
+                                        : length;
+          const double off        = std::min(tangential, radial);
+          if (off <= 0.01 * length)
+            continue;
+          std::ostringstream message;
+          message << "Parameter '" << path << "': the rule '" << texts[k]
+                  << "' does not fit the mesh: a cell of material id "
+                  << rule.id << " has an edge from (" << a << ") to (" << b
+                  << ") m that neither lies on one "
+                  << (rule.kind == Rule::Kind::sphere ? "sphere" : "cylinder")
+                  << " about the "
+                  << (rule.kind == Rule::Kind::sphere ? "centre" : "axis")
+                  << " nor points to it (" << off << " m off, on an edge "
+                  << length << " m long; allowed: 1 % of that). Fix: give the "
+                  << (rule.kind == Rule::Kind::sphere ? "centre" : "axis")
+                  << " in the mesh file's coordinates times 'Scale' (m); "
+                     "for cells of another shape, or cells that hold the "
+                  << (rule.kind == Rule::Kind::sphere ? "centre" : "axis")
+                  << ", use 'material " << rule.id << ": transfinite'.";
+          throw InputError(message.str());
+        }
   }
 
   template <int dim>

@@ -1,5 +1,6 @@
 #include <deal.II/grid/grid_tools.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/meshes/mesh_factory.h>
 
 namespace softgrasp
@@ -54,7 +55,34 @@ namespace softgrasp
         MeshRegistry<dim>::create(type_name, "mesh type ('Mesh/Type')");
     created->parse_parameters(prm);
     mesh = created;
+    refuse_entries_of_other_types(prm);
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  void MeshFactory<dim>::refuse_entries_of_other_types(ParameterHandler &prm)
+  {
+    for (const auto &[name, entry] : MeshRegistry<dim>::all())
+    {
+      if (name == type_name)
+        continue;
+      const auto changed =
+          entries_changed_from_default(prm, entry.declare_parameters);
+      if (changed.empty())
+        continue;
+      std::string list;
+      for (const auto &path : changed)
+        list += (list.empty() ? "'Mesh/" : ", 'Mesh/") + path + "'";
+      throw InputError(
+          "'Mesh/Type' is '" + type_name + "', but " + list +
+          (changed.size() == 1 ? " belongs" : " belong") + " to mesh type '" +
+          name +
+          "' and would be ignored (only the entries of 'Mesh/Type' are "
+          "read). Fix: set 'Mesh/Type = " +
+          name + "' to use " + (changed.size() == 1 ? "it" : "them") +
+          ", or delete " + (changed.size() == 1 ? "it" : "them") +
+          " (or put '#' before the line).");
+    }
   }
 
   template <int dim>

@@ -42,12 +42,12 @@ namespace softgrasp
                       "z >= 0; cut planes y = 0 id 4, z = 0 id 5).");
     prm.declare_entry("Circumferential cells",
                       "16",
-                      Patterns::Integer(4),
+                      Patterns::Integer(4, 4096),
                       "Cells around the full circumference (a part gets its "
                       "share); a multiple of 4. Unit: 1.");
     prm.declare_entry("Radial cells",
                       "4",
-                      Patterns::Integer(1),
+                      Patterns::Integer(1, 1024),
                       "Cells across the wall. Unit: 1.");
     prm.declare_entry("Radial grading",
                       "1",
@@ -68,7 +68,7 @@ namespace softgrasp
                       "uniform). Unit: m.");
     prm.declare_entry("Fine zone cells",
                       "8",
-                      Patterns::Integer(1),
+                      Patterns::Integer(1, 10000),
                       "Axial cells in the zone. Unit: 1.");
     prm.declare_entry("Axial growth",
                       "1.3",
@@ -140,6 +140,20 @@ namespace softgrasp
     if (sector == "full")
       t.pop_back(); // periodic: the last node is the first
     return t;
+  }
+
+  double TubeMesh::n_coarse_cells() const
+  {
+    const double axial = zoned_division(-length / 2,
+                                        length / 2,
+                                        zone_center - zone_length / 2,
+                                        zone_center + zone_length / 2,
+                                        zone_cells,
+                                        axial_growth)
+                             .size() -
+                         1;
+    const double around = angles().size() - (sector == "full" ? 0 : 1);
+    return axial * around * radial_cells;
   }
 
   void TubeMesh::create_coarse_mesh(Triangulation<3> &triangulation) const

@@ -114,6 +114,11 @@ namespace softgrasp
     check_contact_setup();
     {
       TimerOutput::Scope scope(timers, "setup");
+      // A generated mesh's size is known before it is built: a run too
+      // large for the machine is refused before it runs out of memory.
+      const double coarse_cells = mesh.generator().n_coarse_cells();
+      if (!resume && coarse_cells > 0)
+        check_run_size(coarse_cells);
       mesh.create_coarse_mesh(triangulation);
       if (resume)
       {
@@ -126,7 +131,7 @@ namespace softgrasp
       }
       else
       {
-        check_run_size();
+        check_run_size(triangulation.n_global_active_cells());
         mesh.refine(triangulation);
         solid->setup();
       }

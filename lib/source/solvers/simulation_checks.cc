@@ -50,7 +50,8 @@ namespace softgrasp
     }
   } // namespace
 
-  template <int dim> void Simulation<dim>::check_run_size() const
+  template <int dim>
+  void Simulation<dim>::check_run_size(const double n_coarse_cells) const
   {
     const auto &limits = solver_parameters.limits;
     if (!limits.check_size)
@@ -75,9 +76,9 @@ namespace softgrasp
     // Memory: cells after refinement x dofs per cell x bytes per dof (the
     // sparse tangent with (2k+1)^dim coupled nodes per row, a direct
     // factorisation about 4 times that; explicit runs hold vectors only).
-    const unsigned int k     = solver_parameters.discretization.degree;
-    const double       cells = double(triangulation.n_global_active_cells()) *
-                         std::pow(2.0, dim * mesh.global_refinements);
+    const unsigned int k = solver_parameters.discretization.degree;
+    const double       cells =
+        n_coarse_cells * std::pow(2.0, dim * mesh.global_refinements);
     const double dofs = cells * std::pow(double(k), dim) * dim;
     const double row  = 12.0 * dim * std::pow(2.0 * k + 1, dim);
     const double factor =
@@ -146,8 +147,8 @@ namespace softgrasp
 
   template void Simulation<2>::check_contact_setup() const;
   template void Simulation<3>::check_contact_setup() const;
-  template void Simulation<2>::check_run_size() const;
-  template void Simulation<3>::check_run_size() const;
+  template void Simulation<2>::check_run_size(const double) const;
+  template void Simulation<3>::check_run_size(const double) const;
   template void Simulation<2>::check_mesh_references() const;
   template void Simulation<3>::check_mesh_references() const;
 } // namespace softgrasp

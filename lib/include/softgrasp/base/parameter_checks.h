@@ -2,6 +2,7 @@
 #define softgrasp_base_parameter_checks_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,18 @@ namespace softgrasp
     const dealii::ParameterHandler &prm;
     const std::string               path;
   };
+
+  /**
+   * The entries that @p declare (a plugin's declare_parameters(), which
+   * declares its own subsections) would declare and that @p prm, inside the
+   * subsection where they are declared, holds with a value other than
+   * their default: paths relative to that subsection ("File/Manifolds").
+   * Used to refuse the settings of a plugin that is not chosen, which would
+   * otherwise be ignored without a word.
+   */
+  std::vector<std::string> entries_changed_from_default(
+      dealii::ParameterHandler                              &prm,
+      const std::function<void(dealii::ParameterHandler &)> &declare);
 } // namespace softgrasp
 
 #endif

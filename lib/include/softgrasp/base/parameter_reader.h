@@ -42,6 +42,15 @@ namespace softgrasp
     static std::vector<std::pair<std::string, std::string>>
     flatten(const dealii::ParameterHandler &prm);
 
+    /**
+     * Record that the top-level subsection @p section is read by @p programs
+     * only (e.g. "arm_grasp or grasp_pull_sweep"), so that a file given to
+     * another program is said to belong to them. Called from a static
+     * initializer next to the declaration of that subsection; returns true.
+     */
+    static bool register_program_section(const std::string &section,
+                                         const std::string &programs);
+
     /// Parse @p text (from @p source, used in messages) into @p prm.
     void read_string(dealii::ParameterHandler &prm,
                      const std::string        &text,

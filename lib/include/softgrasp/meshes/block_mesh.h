@@ -18,6 +18,7 @@ namespace softgrasp
     void        parse_parameters(dealii::ParameterHandler &prm) override;
     void        create_coarse_mesh(
                dealii::Triangulation<dim> &triangulation) const override;
+    double n_coarse_cells() const override;
 
     dealii::Point<dim>        lower, upper; ///< m
     std::vector<unsigned int> subdivisions; ///< per direction

@@ -41,6 +41,10 @@ namespace softgrasp
     std::array<double, 2> semi_axes(const unsigned int k, const double x) const;
     /// Throws an InputError if a layer does not fit anywhere along x.
     void check() const;
+    /// Throws an InputError if a size lies outside the range of human limbs
+    /// (a newborn's forearm to an adult's thigh): usually a unit typed
+    /// wrong. 'Mesh/Layered limb/Check human size = false' skips it.
+    void check_human_size() const;
   };
 
   /**
@@ -113,6 +117,7 @@ namespace softgrasp
     std::vector<double> radial_nodes() const;
     /// The axial node coordinates x from the shoulder to the elbow end.
     std::vector<double> axial_nodes() const;
+    double              n_coarse_cells() const override;
 
     LimbGeometry geometry;
     Bone         bone = Bone::rigid;

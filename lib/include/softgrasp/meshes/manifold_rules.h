@@ -77,6 +77,12 @@ namespace softgrasp
     /// distance of a vertex from its face's surface and the fix otherwise.
     void check_fit(const dealii::Triangulation<dim> &triangulation,
                    const unsigned int                k) const;
+    /// Every edge of the cells of material rule @p k (sphere or cylinder)
+    /// must run along the rule's coordinate lines: on one sphere (cylinder)
+    /// within 1 % of its length, or radially (in a plane through the
+    /// axis); an InputError naming the rule, the edge and the fix otherwise.
+    void check_cells_fit(const dealii::Triangulation<dim> &triangulation,
+                         const unsigned int                k) const;
 
     std::vector<Rule>        rules;
     std::vector<std::string> texts; ///< each rule as written

@@ -50,6 +50,10 @@ namespace softgrasp
     dealii::types::material_id material_id = 0;
 
   private:
+    /// Refuse entries set for a mesh type other than 'Mesh/Type' (they
+    /// would be ignored); @p prm is inside "Mesh".
+    void refuse_entries_of_other_types(dealii::ParameterHandler &prm);
+
     std::shared_ptr<const MeshGenerator<dim>> mesh;
   };
 } // namespace softgrasp

@@ -77,6 +77,14 @@ namespace softgrasp
       return false;
     }
 
+    /// The number of coarse cells, known before the mesh is built so that
+    /// a run too large for the machine is refused before it is (0: known
+    /// only once built, e.g. for a file).
+    virtual double n_coarse_cells() const
+    {
+      return 0;
+    }
+
     /// True if the generator sets the material ids (several tissues);
     /// otherwise 'Mesh/Material id' is applied to every cell.
     virtual bool sets_material_ids() const

@@ -34,6 +34,8 @@ namespace softgrasp
       return true;
     }
 
+    double n_coarse_cells() const override;
+
     /// The radial node coordinates r from the inner to the outer surface.
     std::vector<double> radial_nodes() const;
     /// The angles of the circumferential nodes (rad; periodic if full).

@@ -97,7 +97,7 @@ namespace softgrasp
     /// bodies without contact.
     void check_contact_setup() const;
     /// Refuse runs that need more memory or steps than allowed.
-    void check_run_size() const;
+    void check_run_size(const double n_coarse_cells) const;
     /// Boundary ids and monitor points that the mesh must have.
     void check_mesh_references() const;
 
