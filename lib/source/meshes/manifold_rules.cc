@@ -170,15 +170,9 @@ namespace softgrasp
   void ManifoldRules<dim>::check_fit(const Triangulation<dim> &tria,
                                      const unsigned int        k) const
   {
-    const Rule &rule = rules[k];
-    // distance of x from the centre (sphere) or from the axis (cylinder)
-    const auto radius = [&rule](const Point<dim> &x)
-    {
-      Tensor<1, dim> d = x - rule.point;
-      if (rule.kind == Rule::Kind::cylinder)
-        d -= (d * rule.axis) * rule.axis;
-      return d.norm();
-    };
+    const Rule &rule   = rules[k];
+    const auto  radius = [&rule](const Point<dim> &x)
+    { return rule.from_centre(x).norm(); };
     double worst = 0, worst_size = 0;
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
@@ -215,15 +209,9 @@ namespace softgrasp
   void ManifoldRules<dim>::check_cells_fit(const Triangulation<dim> &tria,
                                            const unsigned int        k) const
   {
-    const Rule &rule = rules[k];
-    // x relative to the centre, or to the axis (its axial part removed)
-    const auto from_centre = [&rule](const Point<dim> &x)
-    {
-      Tensor<1, dim> d = x - rule.point;
-      if (rule.kind == Rule::Kind::cylinder)
-        d -= (d * rule.axis) * rule.axis;
-      return d;
-    };
+    const Rule &rule        = rules[k];
+    const auto  from_centre = [&rule](const Point<dim> &x)
+    { return rule.from_centre(x); };
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->material_id() == rule.id)
         for (const unsigned int l : cell->line_indices())

@@ -46,6 +46,16 @@ namespace softgrasp
       } kind;
       dealii::Point<dim>     point; ///< sphere centre or point on axis, m
       dealii::Tensor<1, dim> axis;  ///< cylinder axis (unit)
+
+      /// @p x relative to the centre (sphere), or to the axis with its
+      /// axial part removed (cylinder); its norm is the radius at @p x (m).
+      dealii::Tensor<1, dim> from_centre(const dealii::Point<dim> &x) const
+      {
+        dealii::Tensor<1, dim> d = x - point;
+        if (kind == Kind::cylinder)
+          d -= (d * axis) * axis;
+        return d;
+      }
     };
 
     /// Parse @p text ("" for none); @p path names the entry in errors.
