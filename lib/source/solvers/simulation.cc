@@ -131,7 +131,8 @@ namespace softgrasp
       }
       else
       {
-        check_run_size(triangulation.n_global_active_cells());
+        if (!(coarse_cells > 0)) // a file: counted once read
+          check_run_size(triangulation.n_global_active_cells());
         mesh.refine(triangulation);
         solid->setup();
       }

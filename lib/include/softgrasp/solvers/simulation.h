@@ -96,7 +96,8 @@ namespace softgrasp
     /// Refuse a body held by nothing, and contact without bodies or
     /// bodies without contact.
     void check_contact_setup() const;
-    /// Refuse runs that need more memory or steps than allowed.
+    /// Refuse runs that need more memory or steps than allowed, for a
+    /// coarse mesh of @p n_coarse_cells cells before refinement.
     void check_run_size(const double n_coarse_cells) const;
     /// Boundary ids and monitor points that the mesh must have.
     void check_mesh_references() const;
