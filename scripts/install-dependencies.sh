@@ -7,6 +7,8 @@ set -euo pipefail
 packages=(
   # build tools
   build-essential cmake ninja-build ccache pkg-config clang-format
+  # a fast linker (cmake/build_speed.cmake picks it up)
+  mold
   # finite elements (deal.II 9.4 with Trilinos, MPI, p4est, HDF5, ADOL-C)
   libdeal.ii-dev
   # MPI runtime for mpirun

@@ -1,0 +1,49 @@
+# The labels 'quick' and 'long' (README, "Developing"). Names are CTest's
+# without the build type ('contact/hertz' and 'contact/hertz.mpirun=2' for
+# contact/hertz.release and contact/hertz.mpirun=2.release).
+#
+# quick: at least one test of every library module (base, materials,
+# meshes, rigid, mechanics, contact, explicit, postprocess, io, solvers,
+# grasp, mujoco), of the softgrasp program, of every example and of every
+# study, chosen among the fast ones: `ctest -L quick` takes about 5 minutes
+# on 2 cores after `--target all tests` (doc/benchmarks.md).
+set(SOFTGRASP_QUICK_TESTS
+  # library modules
+  materials/tangent_consistency materials/presets
+  postprocess/principal_strains postprocess/tissue_injury.mpirun=2
+  mechanics/bad_input mechanics/implicit_dynamics
+  mechanics/cook_membrane_reference
+  meshes/generated_shapes rigid/shapes io/kinematics_file
+  contact/nodal_law explicit/internal_force solvers/custom_stepper
+  mujoco/capsule_distance
+  # base (parameters, output directory, restart) through the programs
+  reliability/user_files reliability/initial_overlap restart/kill_and_resume
+  style/floors package/find_package_consumer
+  # the softgrasp program, every example, every study
+  programs/softgrasp_no_file programs/softgrasp_hertz
+  examples/tissue_curves examples/cook_membrane examples/ironing
+  examples/hertz_indentation examples/frictional_drag
+  studies/sphere_squeeze studies/sphere_squeeze_missing_file
+  studies/grasp_pull_sweep_bad_level)
+
+# long: every test that took over 60 s on 2 cores under ctest -j2
+# (doc/benchmarks.md, "Build and test times").
+set(SOFTGRASP_LONG_TESTS
+  )
+
+# Label the tests of the current directory: the category (the name up to
+# its '/'), and 'quick' and 'long' from the lists above.
+function(softgrasp_label_tests)
+  get_property(tests DIRECTORY PROPERTY TESTS)
+  foreach(test ${tests})
+    string(REGEX REPLACE "\\.(release|debug)$" "" name "${test}")
+    string(REGEX REPLACE "/.*$" "" category "${name}")
+    set_property(TEST ${test} APPEND PROPERTY LABELS ${category})
+    if(name IN_LIST SOFTGRASP_QUICK_TESTS)
+      set_property(TEST ${test} APPEND PROPERTY LABELS quick)
+    endif()
+    if(name IN_LIST SOFTGRASP_LONG_TESTS)
+      set_property(TEST ${test} APPEND PROPERTY LABELS long)
+    endif()
+  endforeach()
+endfunction()
