@@ -29,7 +29,7 @@ set(SOFTGRASP_QUICK_TESTS
 # long: every test that took over 60 s on 2 cores under ctest -j2
 # (doc/benchmarks.md, "Build and test times").
 set(SOFTGRASP_LONG_TESTS
-  )
+  mujoco/grasp_pull_fe mujoco/sweep_recovery)
 
 # Label the tests of the current directory: the category (the name up to
 # its '/'), and 'quick' and 'long' from the lists above.
@@ -39,11 +39,31 @@ function(softgrasp_label_tests)
     string(REGEX REPLACE "\\.(release|debug)$" "" name "${test}")
     string(REGEX REPLACE "/.*$" "" category "${name}")
     set_property(TEST ${test} APPEND PROPERTY LABELS ${category})
+    if(name IN_LIST SOFTGRASP_QUICK_TESTS OR name IN_LIST SOFTGRASP_LONG_TESTS)
+      set_property(GLOBAL APPEND PROPERTY SOFTGRASP_LABELLED_TESTS ${name})
+    endif()
     if(name IN_LIST SOFTGRASP_QUICK_TESTS)
       set_property(TEST ${test} APPEND PROPERTY LABELS quick)
     endif()
     if(name IN_LIST SOFTGRASP_LONG_TESTS)
       set_property(TEST ${test} APPEND PROPERTY LABELS long)
+    endif()
+  endforeach()
+endfunction()
+
+# In a configuration with every test (MuJoCo and the examples found), each
+# name of the lists must be a test: a renamed test would otherwise leave
+# the quick check without it, silently.
+function(softgrasp_check_labelled_tests)
+  if(NOT SOFTGRASP_HAVE_MUJOCO OR NOT SOFTGRASP_BUILD_EXAMPLES)
+    return()
+  endif()
+  get_property(labelled GLOBAL PROPERTY SOFTGRASP_LABELLED_TESTS)
+  foreach(name ${SOFTGRASP_QUICK_TESTS} ${SOFTGRASP_LONG_TESTS})
+    if(NOT name IN_LIST labelled)
+      message(FATAL_ERROR "tests/labels.cmake names '${name}', which is no "
+        "test. Fix: use the test's name as 'ctest -N' shows it, without "
+        "'.release'.")
     endif()
   endforeach()
 endfunction()
