@@ -73,7 +73,7 @@ main(int argc, char **argv)
   for (const auto id : boundary_ids)
     dealii::deallog << " " << id;
   dealii::deallog << std::endl;
-  SG_CHECK(material_ids == std::set<unsigned int>({1, 2}), "material ids kept");
+  SG_CHECK(material_ids == (std::set<unsigned int>{1, 2}), "material ids kept");
   SG_CHECK(boundary_ids.count(10) && boundary_ids.count(11) &&
                boundary_ids.count(12) && boundary_ids.count(13),
            "boundary ids kept");

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/contact/contact_parameters.h>
+#include <softgrasp/contact/implicit_contact.h>
 
 namespace softgrasp
 {
@@ -32,6 +33,58 @@ namespace softgrasp
                       "curved rigid surfaces flip nodes between open and "
                       "closed; small values decide by the contact force. "
                       "Unit: 1. Range: (0, inf).");
+    prm.declare_entry(
+        "Enforcement",
+        "lagrange multipliers",
+        Patterns::Anything(),
+        "How the implicit solvers (quasi-static, implicit dynamic) enforce "
+        "contact. 'lagrange multipliers' (the default): dual mortar "
+        "multipliers, the active set and stick or slip decided per Newton "
+        "iteration by a semi-smooth Newton method (exact; may cycle between "
+        "stick and slip on a deep frictional drag). 'incremental "
+        "potential': every step the "
+        "minimisation of one potential (strain energy, inertia, an "
+        "augmented Lagrangian on the gap, friction as a lagged, smoothed "
+        "dissipation potential) by Newton with a line search on that "
+        "potential, repeated in outer iterations until the normal forces "
+        "and tangent frames settle; it cannot cycle between stick and slip. "
+        "The explicit solver has its own enforcement. Valid names: " +
+            ContactEnforcementRegistry<3>::names_separated_by(", ") + ".");
+    prm.declare_entry("Penalty factor",
+                      "100",
+                      Patterns::Double(1e-6),
+                      "Incremental potential: the augmented Lagrangian's "
+                      "normal penalty k = factor * 2 mu_0 h (N/m; mu_0 the "
+                      "largest initial shear modulus, h the node's surface "
+                      "spacing). Larger values need fewer outer iterations "
+                      "and make the tangent stiffer. Unit: 1. Range: "
+                      "(0, inf).");
+    prm.declare_entry("Slip tolerance",
+                      "1e-5",
+                      Patterns::Double(1e-12),
+                      "Incremental potential: the slip length eps (m) of the "
+                      "smoothed Coulomb law (IPC's f1): below a slip of eps "
+                      "per step the friction force grows smoothly from zero "
+                      "with the slip (a sticking node creeps by less than "
+                      "eps per step), "
+                      "beyond it the force is mu times the normal force. "
+                      "Unit: m. Range: (0, inf); small against the node "
+                      "spacing and the slip per step.");
+    prm.declare_entry("Settle tolerance",
+                      "1e-3",
+                      Patterns::Double(1e-12, 1),
+                      "Incremental potential: a step's outer iterations end "
+                      "when the nodes' normal forces change by at most this "
+                      "fraction of the largest, their tangent frames by at "
+                      "most this angle (rad), and the deepest penetration is "
+                      "at most this fraction of the node spacing. Unit: 1. "
+                      "Range: (0, 1].");
+    prm.declare_entry("Maximum outer iterations",
+                      "30",
+                      Patterns::Integer(1, 1000),
+                      "Incremental potential: the most outer iterations of "
+                      "one step; a step that has not settled after them is "
+                      "cut back. Unit: 1.");
     prm.leave_subsection();
   }
 
@@ -51,6 +104,16 @@ namespace softgrasp
           " is far above measured values (skin on metal or rubber: about "
           "0.2-1.5). Fix: give a Coulomb coefficient between 0 and 3.");
     complementarity_factor = prm.get_double("Complementarity parameter");
+    enforcement            = prm.get("Enforcement");
+    if (ContactEnforcementRegistry<3>::all().count(enforcement) == 0)
+      throw InputError("Parameter 'Contact/Enforcement' = '" + enforcement +
+                       "' is not a contact enforcement. Valid names are: " +
+                       ContactEnforcementRegistry<3>::names_separated_by(", ") +
+                       ". Fix: use one of them.");
+    penalty_factor       = prm.get_double("Penalty factor");
+    slip_tolerance       = prm.get_double("Slip tolerance");
+    settle_tolerance     = prm.get_double("Settle tolerance");
+    max_outer_iterations = prm.get_integer("Maximum outer iterations");
     prm.leave_subsection();
   }
 } // namespace softgrasp

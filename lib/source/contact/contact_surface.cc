@@ -223,6 +223,21 @@ namespace softgrasp
   }
 
   template <int dim>
+  Eigen::Matrix3d ContactSurface<dim>::normal_gradient(const Proximity       &p,
+                                                       const Eigen::Vector3d &x,
+                                                       const double h) const
+  {
+    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+    for (unsigned int k = 0; k < dim; ++k)
+    {
+      Eigen::Vector3d e = Eigen::Vector3d::Zero();
+      e[k]              = h;
+      H.col(k)          = (normal_at(p, x + e) - normal_at(p, x - e)) / (2 * h);
+    }
+    return 0.5 * (H + H.transpose());
+  }
+
+  template <int dim>
   Eigen::Vector3d ContactSurface<dim>::normal_at(const Proximity       &p,
                                                  const Eigen::Vector3d &x) const
   {

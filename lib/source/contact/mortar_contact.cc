@@ -27,7 +27,7 @@ namespace softgrasp
                                     const RigidBodySet      &bodies,
                                     const double             shear_modulus,
                                     TimerOutput             &timer)
-      : ContactSurface<dim>(parameters, bodies)
+      : ImplicitContact<dim>(parameters, bodies)
       , shear_modulus(shear_modulus)
       , timer(timer)
   {
@@ -147,21 +147,6 @@ namespace softgrasp
   }
 
   template <int dim>
-  Eigen::Matrix3d
-  MortarContact<dim>::normal_gradient(const Proximity       &p,
-                                      const Eigen::Vector3d &x) const
-  {
-    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-    for (unsigned int k = 0; k < dim; ++k)
-    {
-      Eigen::Vector3d e = Eigen::Vector3d::Zero();
-      e[k]              = fd_step;
-      H.col(k) = (normal_at(p, x + e) - normal_at(p, x - e)) / (2 * fd_step);
-    }
-    return 0.5 * (H + H.transpose());
-  }
-
-  template <int dim>
   NodalContactInput MortarContact<dim>::contact_input(const unsigned int     j,
                                                       const Eigen::Vector3d &x,
                                                       const Eigen::Vector3d &f,
@@ -189,7 +174,7 @@ namespace softgrasp
     if (dim == 2)
       input.w[2] = 0;
     if (input.n.dot(f) - input.c * input.gap > 0)
-      input.H = normal_gradient(p, x);
+      input.H = this->normal_gradient(p, x, fd_step);
     return input;
   }
 
@@ -557,3 +542,12 @@ namespace softgrasp
   template class MortarContact<2>;
   template class MortarContact<3>;
 } // namespace softgrasp
+
+SOFTGRASP_REGISTER_CONTACT_ENFORCEMENT(
+    softgrasp::MortarContact,
+    lagrange_multipliers,
+    "lagrange multipliers",
+    "dual mortar Lagrange multipliers condensed at the nodes, KKT and "
+    "Coulomb conditions as complementarity functions, active set decided "
+    "per Newton iteration (exact, no penalty; may cycle between stick and "
+    "slip on a deep frictional drag, doc/contact.md)")

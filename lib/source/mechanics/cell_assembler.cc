@@ -144,6 +144,7 @@ namespace softgrasp
     copy.dof_indices.resize(n);
     cell->get_dof_indices(copy.dof_indices);
     copy.cell_index = cell->active_cell_index();
+    copy.energy     = 0;
     copy.internal.reinit(n);
     copy.external.reinit(n);
     if (with_matrix)
@@ -159,6 +160,10 @@ namespace softgrasp
       if (inertia.active())
         add_inertia(u, material, with_matrix, inertia, scratch, copy);
       assemble_boundary(cell, u, with_matrix, scratch, copy);
+      // minus the work of the external forces at their present values
+      // (exact for dead loads)
+      for (unsigned int k = 0; k < n; ++k)
+        copy.energy -= copy.external[k] * u[copy.dof_indices[k]];
     }
     catch (const InvertedMaterialState &e)
     {
@@ -335,6 +340,13 @@ namespace softgrasp
             PlaneStrain::to_3d(F), directions, with_matrix, response);
       const SymmetricTensor<2, dim> tau = restrict<dim>(response.stress);
       const double                  JxW = scratch.JxW[q];
+      // the condensed u-p-J energy int Psi_iso + U(J~) dV: with J~ the
+      // projection of J onto the pressure space, int p~ (J - J~) dV = 0
+      copy.energy +=
+          (response.energy + (mixed ? material.volumetric_energy().energy(
+                                          scratch.dilatation.dilatation(q))
+                                    : 0.)) *
+          fe_values.JxW(q);
 
       // f_(I c) = int (tau grad_x N_I)_c dV
       for (unsigned int I = 0; I < n_nodes; ++I)
@@ -484,9 +496,10 @@ namespace softgrasp
     const double factor = inertia.inverse_dt_squared;
     for (unsigned int k = 0; k < mass.size(); ++k)
     {
-      const auto index = copy.dof_indices[k];
-      copy.internal[k] +=
-          mass[k] * factor * (u[index] - (*inertia.predictor)[index]);
+      const auto   index = copy.dof_indices[k];
+      const double lag   = u[index] - (*inertia.predictor)[index];
+      copy.internal[k] += mass[k] * factor * lag;
+      copy.energy += 0.5 * mass[k] * factor * lag * lag;
       if (with_matrix)
         copy.matrix(k, k) += mass[k] * factor;
     }

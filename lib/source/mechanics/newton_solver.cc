@@ -123,6 +123,99 @@ namespace softgrasp
   }
 
   template <int dim>
+  double NewtonSolver<dim>::potential_line_search(
+      SolidSystem<dim>                          &system,
+      const TrilinosWrappers::MPI::Vector       &du,
+      double                                    &violation,
+      typename SolidSystem<dim>::AssemblyResult &state,
+      Result                                    &result) const
+  {
+    const bool jump =
+        violation > 1e-12 * std::max(system.solution().linfty_norm(), 1e-300);
+    system.begin_update();
+    const double E0 = state.energy;
+    // s0 = -dE/dalpha at alpha = 0 (the residual is -grad E)
+    const double s0 = system.residual_dot(du);
+    // the energy's round-off: sums of terms of the size of E0 and of the
+    // work along the full step
+    const double       noise = 1e-11 * (std::abs(E0) + std::abs(s0)) + 1e-300;
+    const unsigned int max_steps =
+        std::max(parameters.max_line_search_steps, 20u);
+    double alpha = 1.0;
+    for (unsigned int ls = 0;; ++ls)
+    {
+      system.apply_update(du, alpha);
+      violation = system.update_constraints();
+      state     = system.assemble(false);
+      if (!state.ok || !std::isfinite(state.energy))
+      {
+        if (ls >= max_steps)
+          break;
+        alpha *= 0.5;
+        continue;
+      }
+      // with boundary values still being imposed, E is not minimised along
+      // du; without descent the full step stands
+      const double change = state.energy - E0;
+      if (jump || !(s0 > 0) || change <= -1e-4 * alpha * s0 + noise)
+        break;
+      if (ls >= max_steps)
+      {
+        ++result.energy_increases;
+        break;
+      }
+      // minimiser of the quadratic through E0, the slope -s0 and E(alpha)
+      const double fit =
+          0.5 * alpha * alpha * s0 / std::max(change + alpha * s0, 1e-300);
+      alpha = std::min(0.5 * alpha, std::max(0.1 * alpha, fit));
+    }
+    return alpha;
+  }
+
+  template <int dim>
+  typename NewtonSolver<dim>::Descent NewtonSolver<dim>::make_descent(
+      SolidSystem<dim>                          &system,
+      TrilinosWrappers::MPI::Vector             &du,
+      const double                               tolerance,
+      typename SolidSystem<dim>::AssemblyResult &state,
+      Result                                    &result) const
+  {
+    // no descent: the node Hessians' negative part (the rigid surfaces'
+    // curvature) outweighs the tissue; solve again with their positive
+    // semi-definite projection
+    log << ", no descent: node Hessians projected";
+    system.project_nodal_hessians(true);
+    const auto           projected = system.assemble(true);
+    LinearSolver::Result linear;
+    if (projected.ok)
+      linear = system.solve(du, forcing_term(result.residuals, tolerance));
+    system.project_nodal_hessians(false);
+    if (!projected.ok)
+    {
+      state = projected;
+      log << std::endl;
+      return Descent::reassemble;
+    }
+    result.linear_iterations += linear.iterations;
+    result.failure = failure_of(linear);
+    if (!result.failure.empty())
+    {
+      log << std::endl;
+      return Descent::failed;
+    }
+    if (!(system.residual_dot(du) > 0))
+    {
+      // still no descent (the tissue's own tangent is indefinite): the
+      // reversed direction descends, and the line search on the potential
+      // keeps the step from raising it
+      ++result.non_descent;
+      du *= -1.0;
+      log << ", reversed";
+    }
+    return Descent::ready;
+  }
+
+  template <int dim>
   typename NewtonSolver<dim>::Result
   NewtonSolver<dim>::iterate(SolidSystem<dim> &system) const
   {
@@ -191,8 +284,23 @@ namespace softgrasp
         return result;
       }
 
-      const double alpha = line_search(system, du, u_scale, violation, state);
-      last_increment     = alpha * du.linfty_norm();
+      const bool potential = system.has_nodal_conditions() &&
+                             system.has_potential() && parameters.line_search;
+      if (potential && violation <= 1e-12 * u_scale &&
+          !(system.residual_dot(du) > 0))
+      {
+        const Descent descent =
+            make_descent(system, du, tolerance, state, result);
+        if (descent == Descent::reassemble)
+          continue;
+        if (descent == Descent::failed)
+          return result;
+      }
+      const double alpha =
+          potential
+              ? potential_line_search(system, du, violation, state, result)
+              : line_search(system, du, u_scale, violation, state);
+      last_increment = alpha * du.linfty_norm();
       if (alpha < 1)
         log << ", line search alpha = " << alpha;
       log << std::endl;

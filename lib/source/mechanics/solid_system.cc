@@ -324,6 +324,7 @@ namespace softgrasp
         }
         return;
       }
+      result.energy += copy.energy;
       Vector<double> cell_rhs(copy.external);
       cell_rhs -= copy.internal;
       f_int.add(copy.dof_indices, copy.internal);
@@ -355,6 +356,9 @@ namespace softgrasp
     if (recording)
       dilatation_state.set_recorded(true);
     apply_nodal_conditions(with_matrix);
+    result.energy = Utilities::MPI::sum(result.energy, communicator());
+    if (nodal_conditions != nullptr)
+      result.energy += nodal_conditions->energy();
     result.residual_norm = residual.l2_norm();
     result.force_scale   = std::max(f_int.l2_norm(), f_ext.l2_norm());
     return result;
@@ -362,7 +366,12 @@ namespace softgrasp
 
   template <int dim> void SolidSystem<dim>::begin_newton_solve()
   {
-    if (parameters.discretization.formulation == Formulation::mixed_upJ)
+    // With a potential, J~ and p~ stay projected from the displacement, so
+    // that the residual is the gradient of the condensed energy.
+    const bool potential =
+        nodal_conditions != nullptr && nodal_conditions->is_potential();
+    if (parameters.discretization.formulation == Formulation::mixed_upJ &&
+        !potential)
       dilatation_state.start(triangulation.n_active_cells());
   }
 
@@ -607,6 +616,19 @@ namespace softgrasp
   template <int dim> bool SolidSystem<dim>::has_nodal_conditions() const
   {
     return nodal_conditions != nullptr;
+  }
+
+  template <int dim>
+  void SolidSystem<dim>::project_nodal_hessians(const bool on)
+  {
+    if (nodal_conditions != nullptr)
+      nodal_conditions->project_to_positive(on);
+  }
+
+  template <int dim> bool SolidSystem<dim>::has_potential() const
+  {
+    return !boundary_conditions.has_follower_loads() &&
+           (nodal_conditions == nullptr || nodal_conditions->is_potential());
   }
 
   template <int dim>

@@ -35,11 +35,10 @@ namespace softgrasp
   ImplicitStepper<dim>::make_contact(const SimulationAccess<dim> &run,
                                      const double                 shear_modulus)
   {
-    auto contact =
-        std::make_unique<MortarContact<dim>>(run.contact_parameters(),
-                                             run.rigid_bodies(),
-                                             shear_modulus,
-                                             run.timers());
+    auto contact = create_implicit_contact<dim>(run.contact_parameters(),
+                                                run.rigid_bodies(),
+                                                shear_modulus,
+                                                run.timers());
     contact->setup(run.solid());
     run.solid().set_nodal_conditions(contact.get());
     mortar = contact.get();
@@ -286,17 +285,58 @@ namespace softgrasp
   {
     run.boundary_conditions().set_time(time);
     if (mortar)
+    {
       mortar->set_time(time);
-    const auto result      = newton->solve(run.solid());
-    last_newton_iterations = result.iterations;
-    last_linear_iterations = result.linear_iterations;
+      mortar->begin_step();
+    }
+    // An enforcement that holds something fixed within a Newton solve (the
+    // lagged friction of the incremental potential) repeats the solve until
+    // that has settled: the outer iterations.
+    const unsigned int max_outer = mortar ? mortar->max_outer_iterations() : 1;
+    typename NewtonSolver<dim>::Result result;
+    unsigned int                       newton_total = 0, linear_total = 0;
+    unsigned int                       increases = 0, non_descent = 0;
+    std::string                        unsettled;
+    for (last_outer_iterations = 1;; ++last_outer_iterations)
+    {
+      result = newton->solve(run.solid());
+      increases += result.energy_increases;
+      non_descent += result.non_descent;
+      newton_total += result.iterations;
+      linear_total += result.linear_iterations;
+      if (!result.converged || mortar == nullptr)
+        break;
+      std::string line;
+      const bool  settled = mortar->settle(run.solid(), line);
+      if (!line.empty())
+        run.verbose_out() << "    outer " << last_outer_iterations << ": "
+                          << line << std::endl;
+      if (settled)
+        break;
+      if (last_outer_iterations == max_outer)
+      {
+        result.converged = false;
+        result.failure   = "the contact's outer iterations did not settle in " +
+                         std::to_string(max_outer) + " (" + line +
+                         "; 'Contact/Maximum outer iterations', 'Contact/"
+                         "Settle tolerance')";
+        break;
+      }
+    }
+    last_newton_iterations = newton_total;
+    last_linear_iterations = linear_total;
+    last_energy_increases  = increases;
+    last_non_descent       = non_descent;
     last_residual = result.residuals.empty() ? 0 : result.residuals.back();
     if (result.converged)
       return true;
     std::ostringstream message;
     message << "Step " << run.state().step + 1 << " (t = " << time
             << " s, from t = " << run.state().time
-            << " s) failed: " << result.failure << ". Residual history (N):";
+            << " s) failed in outer iteration " << last_outer_iterations
+            << " after " << newton_total
+            << " Newton iterations: " << result.failure
+            << ". Residual history (N):";
     for (const double r : result.residuals)
       message << " " << std::scientific << std::setprecision(3) << r;
     report = message.str();
@@ -323,6 +363,17 @@ namespace softgrasp
       trailing = {{"contact_active_nodes", double(mortar->n_active())},
                   {"contact_slip_nodes", double(mortar->n_slip())},
                   {"active_set_changes", double(mortar->changes_in_step())}};
+    if (mortar && mortar->max_outer_iterations() > 1)
+    {
+      // the minimisation's own checks: updates along which the potential
+      // rose, directions that were not of descent
+      trailing.emplace_back("outer_iterations",
+                            double(first ? 0 : last_outer_iterations));
+      trailing.emplace_back("energy_increases",
+                            double(first ? 0 : last_energy_increases));
+      trailing.emplace_back("non_descent_directions",
+                            double(first ? 0 : last_non_descent));
+    }
     run.record(time, leading, trailing);
     if (mortar)
       mortar->accept_step(run.solid(), time);

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
+#include <string>
 #include <vector>
 
 namespace softgrasp
@@ -18,6 +19,23 @@ namespace softgrasp
     /// the largest initial shear modulus, h the node's surface spacing).
     /// It steers only the active-set prediction, not the converged answer.
     double complementarity_factor = 0.1; ///< (1)
+    /// How the implicit solvers enforce contact: a registered
+    /// ContactEnforcement ("lagrange multipliers", "incremental potential").
+    std::string enforcement = "lagrange multipliers";
+    /// Incremental potential: the normal penalty k = factor * 2 mu_0 h of
+    /// the augmented Lagrangian, as the complementarity parameter (1).
+    double penalty_factor = 100;
+    /// Incremental potential: the slip length eps of the smoothed Coulomb
+    /// law (m): a node creeps by at most eps per step while it sticks.
+    double slip_tolerance = 1e-5;
+    /// Incremental potential: the outer iterations of a step stop when
+    /// the normal forces change by at most this fraction of the largest
+    /// (1) and the penetration is at most this fraction of the node
+    /// spacing.
+    double settle_tolerance = 1e-3;
+    /// Incremental potential: the most outer iterations of a step before
+    /// it is cut back.
+    unsigned int max_outer_iterations = 30;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

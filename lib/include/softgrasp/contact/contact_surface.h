@@ -127,6 +127,11 @@ namespace softgrasp
                                 const Eigen::Vector3d &x) const;
     Eigen::Vector3d normal_at(const Proximity       &p,
                               const Eigen::Vector3d &x) const;
+    /// grad n of geom @p p at @p x (1/m), the rigid surface's curvature,
+    /// by central differences of step @p h (m), symmetrised.
+    Eigen::Matrix3d normal_gradient(const Proximity       &p,
+                                    const Eigen::Vector3d &x,
+                                    const double           h) const;
     void            place_bodies(const double                    time,
                                  std::vector<std::vector<Pose>> &poses) const;
 

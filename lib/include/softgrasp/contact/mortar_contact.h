@@ -3,7 +3,7 @@
 
 #include <array>
 #include <deal.II/base/timer.h>
-#include <softgrasp/contact/contact_surface.h>
+#include <softgrasp/contact/implicit_contact.h>
 #include <softgrasp/contact/nodal_contact_law.h>
 #include <softgrasp/mechanics/nodal_conditions.h>
 
@@ -36,8 +36,7 @@ namespace softgrasp
    * The surface geometry (nodes, rigid poses, distances) comes from
    * ContactSurface.
    */
-  template <int dim>
-  class MortarContact : public ContactSurface<dim>, public NodalConditions<dim>
+  template <int dim> class MortarContact : public ImplicitContact<dim>
   {
   public:
     using Node = ContactNode<dim>;
@@ -52,7 +51,8 @@ namespace softgrasp
 
     /// Record the converged state at @p time (s) as the start of the next
     /// step's slip (call after each converged step and after a restart).
-    void accept_step(const SolidSystem<dim> &system, const double time);
+    void accept_step(const SolidSystem<dim> &system,
+                     const double            time) override;
 
     void evaluate(const SolidSystem<dim> &system) override;
     void apply_to_residual(
@@ -80,13 +80,13 @@ namespace softgrasp
      * the lumped mass. @p inverse_dt_squared = 0 restores c (quasi-static).
      */
     void set_inertia(const dealii::TrilinosWrappers::MPI::Vector &mass,
-                     const double inverse_dt_squared);
+                     const double inverse_dt_squared) override;
 
     /// Status changes since the evaluation before.
     unsigned int n_changes() const;
     /// Status changes summed over all evaluations since the last
     /// accept_step() (the active-set changes of a load step).
-    unsigned int changes_in_step() const;
+    unsigned int changes_in_step() const override;
 
   private:
     using Proximity = typename ContactSurface<dim>::Proximity;
@@ -137,9 +137,6 @@ namespace softgrasp
      * the node, and the active set would cycle without end.
      */
     Proximity pair(const unsigned int j, const Eigen::Vector3d &x);
-
-    Eigen::Matrix3d normal_gradient(const Proximity       &p,
-                                    const Eigen::Vector3d &x) const;
 
     /// The input of the nodal contact law of node @p j at @p x under the
     /// residual force @p f, paired with @p p.

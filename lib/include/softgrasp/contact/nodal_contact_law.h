@@ -26,8 +26,8 @@ namespace softgrasp
     Eigen::Matrix3d H;   ///< gradient of n with respect to the point (1/m)
     Eigen::Vector3d w;   ///< displacement relative to the rigid surface's
                          ///< material point since the last converged step (m)
-    double mu = 0;       ///< Coulomb friction coefficient
-    double c  = 1;       ///< complementarity parameter, normal (N/m)
+    double mu  = 0;      ///< Coulomb friction coefficient
+    double c   = 1;      ///< complementarity parameter, normal (N/m)
     double c_t = 1;      ///< complementarity parameter, tangential (N/m)
   };
 

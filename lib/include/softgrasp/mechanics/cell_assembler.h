@@ -67,10 +67,15 @@ namespace softgrasp
     /// (ElementDilatation; DilatationState).
     DilatationCoefficients  coefficients;
     DilatationLinearization linearization;
-    double                  volume   = 0;     ///< of the cell (m^3)
-    bool                    failed   = false; ///< inverted element
-    double                  failed_J = 0;
-    std::string             failed_cell;
+    double                  volume = 0; ///< of the cell (m^3)
+    /// The cell's share of the step's potential: strain energy (the
+    /// condensed u-p-J energy for the mixed formulation) plus the inertia
+    /// term minus the work of the external forces at their present values
+    /// (J; J/m in 2D).
+    double      energy   = 0;
+    bool        failed   = false; ///< inverted element
+    double      failed_J = 0;
+    std::string failed_cell;
   };
 
   /**

@@ -32,6 +32,13 @@ namespace softgrasp
       unsigned int        linear_iterations = 0;
       std::vector<double> residuals; ///< |r| per iteration (N)
       std::string         failure;   ///< why, if !converged
+      /// With a potential (SolidSystem::has_potential() and nodal
+      /// conditions): the accepted updates along which the potential did
+      /// not decrease (beyond round-off), and the Newton directions that
+      /// did not descend even with the node Hessians projected to positive
+      /// semi-definite (they are reversed, then line-searched).
+      unsigned int energy_increases = 0;
+      unsigned int non_descent      = 0;
     };
 
     NewtonSolver(const NewtonParameters     &parameters,
@@ -56,6 +63,43 @@ namespace softgrasp
                        const double                                 u_scale,
                        double                                      &violation,
                        typename SolidSystem<dim>::AssemblyResult &state) const;
+
+    /// What make_descent() left: a direction for the line search, a
+    /// tangent that could not be assembled (iterate again from the state),
+    /// or a failed linear solve (Result::failure says why).
+    enum class Descent
+    {
+      ready,
+      reassemble,
+      failed
+    };
+
+    /**
+     * A Newton direction @p du that does not descend on the potential:
+     * solved again with the nodal conditions' Hessians projected to
+     * positive semi-definite and, if that does not descend either,
+     * reversed (counted in Result::non_descent). @p tolerance is Newton's.
+     */
+    Descent make_descent(SolidSystem<dim>                          &system,
+                         dealii::TrilinosWrappers::MPI::Vector     &du,
+                         const double                               tolerance,
+                         typename SolidSystem<dim>::AssemblyResult &state,
+                         Result &result) const;
+
+    /**
+     * The line search of a potential's minimisation: backtracking from the
+     * full step until the potential E decreases by at least 1e-4 alpha
+     * times its slope (Armijo), the step cut by a safeguarded quadratic
+     * fit; updates that invert an element are halved. Updates @p violation
+     * and @p state (whose energy is E at the start) and counts the
+     * accepted updates that did not decrease E in @p result.
+     */
+    double
+    potential_line_search(SolidSystem<dim>                            &system,
+                          const dealii::TrilinosWrappers::MPI::Vector &du,
+                          double                                    &violation,
+                          typename SolidSystem<dim>::AssemblyResult &state,
+                          Result &result) const;
 
     const NewtonParameters      parameters;
     dealii::ConditionalOStream &log;

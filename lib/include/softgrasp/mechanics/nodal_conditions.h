@@ -74,6 +74,35 @@ namespace softgrasp
     /// solid is (no sliding node with friction at the current state).
     virtual bool symmetric() const = 0;
 
+    /**
+     * Whether the conditions add the gradient of a potential (energy()) to
+     * the solid's residual and its (positive semi-definite) Hessian to the
+     * tangent, without transforming rows or adding constraints. Newton then
+     * searches its line on the total potential (NewtonSolver).
+     */
+    virtual bool is_potential() const
+    {
+      return false;
+    }
+
+    /**
+     * Potential conditions: from the next tangent on, add the projection
+     * of each node's Hessian onto the positive semi-definite matrices
+     * (@p on) or the Hessian itself (!@p on). Newton asks for the
+     * projection when the exact tangent gave no descent direction.
+     */
+    virtual void project_to_positive(const bool on)
+    {
+      (void)on;
+    }
+
+    /// The conditions' potential at the last evaluate() (J; J/m in 2D),
+    /// summed over processes; 0 unless is_potential(). Collective.
+    virtual double energy() const
+    {
+      return 0;
+    }
+
     /// One line for the Newton log (e.g. active-set sizes and changes).
     virtual std::string iteration_report() const = 0;
 

@@ -42,6 +42,10 @@ namespace softgrasp
       double      failed_J      = 0; ///< the J found there
       double      residual_norm = 0; ///< |f_int - f_ext| on free dofs (N)
       double      force_scale   = 0; ///< max(|f_int|, |f_ext|) (N)
+      /// The step's potential: strain energy + inertia term - f_ext . u +
+      /// the nodal conditions' potential (J; J/m in 2D). Exact for dead
+      /// loads; a follower pressure has none (has_potential() is false).
+      double energy = 0;
     };
 
     SolidSystem(dealii::parallel::distributed::Triangulation<dim> &tria,
@@ -140,6 +144,14 @@ namespace softgrasp
      */
     void set_nodal_conditions(NodalConditions<dim> *conditions);
     bool has_nodal_conditions() const;
+    /// Whether the residual is the negative gradient of the energy of
+    /// assemble() (no follower loads; no nodal conditions, or potential
+    /// ones), so that Newton may search its line on that energy.
+    bool has_potential() const;
+    /// Whether the tangents that follow project the nodal conditions' node
+    /// Hessians to positive semi-definite (NodalConditions::
+    /// project_to_positive()).
+    void project_nodal_hessians(const bool on);
     /// The nodal conditions' line for the Newton log ("" without them).
     std::string nodal_conditions_report() const;
 

@@ -91,11 +91,16 @@ namespace softgrasp
 
     const bool                         dynamic;
     std::unique_ptr<NewtonSolver<dim>> newton;
-    MortarContact<dim>                *mortar = nullptr; ///< the run's
+    ImplicitContact<dim>              *mortar = nullptr; ///< the run's
     unsigned int                       last_newton_iterations = 0;
-    unsigned int                       last_linear_iterations = 0;
-    double                             last_residual          = 0;
-    double                             previous_time          = 0;
+    /// Newton solves of the last step (the contact's outer iterations).
+    unsigned int last_outer_iterations = 0;
+    /// Of the last step's Newton updates: those that raised the potential
+    /// and those whose direction was not of descent (NewtonSolver::Result).
+    unsigned int last_energy_increases = 0, last_non_descent = 0;
+    unsigned int last_linear_iterations = 0;
+    double       last_residual          = 0;
+    double       previous_time          = 0;
     /// Implicit dynamics: v_n (m/s, owned), the predictor u_n + dt v_n
     /// (ghosted) and the lumped mass (kg, owned and ghosted).
     Vector velocity, predictor, mass, ghosted_mass;

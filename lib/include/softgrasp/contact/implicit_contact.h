@@ -1,0 +1,153 @@
+#ifndef softgrasp_contact_implicit_contact_h
+#define softgrasp_contact_implicit_contact_h
+
+#include <deal.II/base/timer.h>
+#include <memory>
+#include <softgrasp/base/plugin_registry.h>
+#include <softgrasp/contact/contact_surface.h>
+#include <softgrasp/mechanics/nodal_conditions.h>
+#include <string>
+
+namespace softgrasp
+{
+  /**
+   * A contact enforcement of the implicit (Newton) solvers: the surface
+   * geometry of ContactSurface and the node equations of NodalConditions,
+   * plus what a time stepper needs around a load step. Implementations
+   * register themselves by name ('Contact/Enforcement') through
+   * SOFTGRASP_REGISTER_CONTACT_ENFORCEMENT; the steppers never list them.
+   */
+  template <int dim>
+  class ImplicitContact : public ContactSurface<dim>,
+                          public NodalConditions<dim>
+  {
+  public:
+    ImplicitContact(const ContactParameters &parameters,
+                    const RigidBodySet      &bodies)
+        : ContactSurface<dim>(parameters, bodies)
+    {
+    }
+
+    /// Record the converged state at @p time (s) as the start of the next
+    /// step's slip (call after each converged step and after a restart).
+    virtual void accept_step(const SolidSystem<dim> &system,
+                             const double            time) = 0;
+
+    /// Start a load step (or its retry after a cut-back) from the state of
+    /// the last accept_step().
+    virtual void begin_step()
+    {
+    }
+
+    /**
+     * After a converged Newton solve: update what the solve held fixed
+     * (the lagged normal forces and frames, the multipliers of an augmented
+     * Lagrangian) and return whether they had settled, so that the step is
+     * done; false asks for another Newton solve of the same step. @p report
+     * receives one line for the log. Collective.
+     */
+    virtual bool settle(const SolidSystem<dim> &system, std::string &report)
+    {
+      (void)system;
+      report.clear();
+      return true;
+    }
+
+    /// The most outer iterations (settle() calls) a step may take.
+    virtual unsigned int max_outer_iterations() const
+    {
+      return 1;
+    }
+
+    /**
+     * Implicit dynamics: the lumped mass @p mass (kg per dof; ghosted) and
+     * 1/dt^2 of the step (0 restores the quasi-static case), for
+     * enforcements that weigh contact against the nodes' inertia.
+     */
+    virtual void set_inertia(const dealii::TrilinosWrappers::MPI::Vector &mass,
+                             const double inverse_dt_squared)
+    {
+      (void)mass;
+      (void)inverse_dt_squared;
+    }
+
+    /// Status changes summed over all evaluations since the last
+    /// accept_step() (the active-set changes of a load step).
+    virtual unsigned int changes_in_step() const = 0;
+  };
+
+  /// Builds one kind of ImplicitContact; registered by name.
+  template <int dim> class ContactEnforcement
+  {
+  public:
+    virtual ~ContactEnforcement() = default;
+    /// No settings besides those of 'Contact'.
+    static void declare_parameters(dealii::ParameterHandler &)
+    {
+    }
+    /// The enforcement for @p parameters and @p bodies (@p shear_modulus:
+    /// the stiffest material's, Pa).
+    virtual std::unique_ptr<ImplicitContact<dim>>
+    create(const ContactParameters &parameters,
+           const RigidBodySet      &bodies,
+           const double             shear_modulus,
+           dealii::TimerOutput     &timer) const = 0;
+  };
+
+  template <int dim>
+  using ContactEnforcementRegistry = PluginRegistry<ContactEnforcement<dim>>;
+
+  /// The enforcement named 'Contact/Enforcement' in @p parameters; an
+  /// unknown name lists the registered ones.
+  template <int dim>
+  std::unique_ptr<ImplicitContact<dim>>
+  create_implicit_contact(const ContactParameters &parameters,
+                          const RigidBodySet      &bodies,
+                          const double             shear_modulus,
+                          dealii::TimerOutput     &timer)
+  {
+    return ContactEnforcementRegistry<dim>::create(parameters.enforcement,
+                                                   "contact enforcement")
+        ->create(parameters, bodies, shear_modulus, timer);
+  }
+} // namespace softgrasp
+
+/**
+ * Register the ImplicitContact template @p Class (constructed from
+ * (ContactParameters, RigidBodySet, shear modulus, TimerOutput)) as the
+ * contact enforcement @p name; @p tag is a unique identifier.
+ */
+#define SOFTGRASP_REGISTER_CONTACT_ENFORCEMENT(Class, tag, name, description)  \
+  namespace                                                                    \
+  {                                                                            \
+    template <int d>                                                           \
+    class softgrasp_enforcement_##tag                                          \
+        : public ::softgrasp::ContactEnforcement<d>                            \
+    {                                                                          \
+    public:                                                                    \
+      std::unique_ptr<::softgrasp::ImplicitContact<d>>                         \
+      create(const ::softgrasp::ContactParameters &p,                          \
+             const ::softgrasp::RigidBodySet      &b,                          \
+             const double                          g,                          \
+             ::dealii::TimerOutput                &t) const override                          \
+      {                                                                        \
+        return std::make_unique<Class<d>>(p, b, g, t);                         \
+      }                                                                        \
+    };                                                                         \
+    [[maybe_unused]] const bool softgrasp_enforcement_2d_##tag =               \
+        ::softgrasp::ContactEnforcementRegistry<2>::register_plugin(           \
+            name,                                                              \
+            description,                                                       \
+            &::softgrasp::ContactEnforcement<2>::declare_parameters,           \
+            []() -> std::unique_ptr<::softgrasp::ContactEnforcement<2>>        \
+            { return std::make_unique<softgrasp_enforcement_##tag<2>>(); });   \
+    [[maybe_unused]] const bool softgrasp_enforcement_3d_##tag =               \
+        ::softgrasp::ContactEnforcementRegistry<3>::register_plugin(           \
+            name,                                                              \
+            description,                                                       \
+            &::softgrasp::ContactEnforcement<3>::declare_parameters,           \
+            []() -> std::unique_ptr<::softgrasp::ContactEnforcement<3>>        \
+            { return std::make_unique<softgrasp_enforcement_##tag<3>>(); });   \
+  }
+
+#endif

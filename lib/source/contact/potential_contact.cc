@@ -1,0 +1,337 @@
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/vector_operation.h>
+#include <iomanip>
+#include <softgrasp/contact/potential_contact.h>
+#include <sstream>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim>
+  PotentialContact<dim>::PotentialContact(const ContactParameters &parameters,
+                                          const RigidBodySet      &bodies,
+                                          const double shear_modulus,
+                                          TimerOutput &timer)
+      : ImplicitContact<dim>(parameters, bodies)
+      , shear_modulus(shear_modulus)
+      , timer(timer)
+  {
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::setup(const SolidSystem<dim> &system)
+  {
+    ContactSurface<dim>::setup(system);
+    fd_step = 1e-7 * system.length_scale();
+    data.assign(node_list.size(), NodeData());
+    force_floor = 0;
+    for (unsigned int j = 0; j < data.size(); ++j)
+    {
+      const double area = node_list[j].reference_area;
+      // k = factor * 2 mu_0 h (N/m; per metre of thickness in 2D)
+      data[j].penalty = parameters.penalty_factor * 2 * shear_modulus *
+                        std::pow(area, (dim - 2.0) / (dim - 1.0));
+      data[j].spacing = std::pow(area, 1.0 / (dim - 1.0));
+      force_floor = std::max(force_floor, data[j].penalty * data[j].spacing);
+    }
+    // a change of normal force below that of a gap change of 1e-8 of the
+    // node spacing is round-off (a body that only touches: forces of
+    // 1e-13 N changing by 1e-15 N would never settle on a relative test)
+    force_floor = 1e-8 * Utilities::MPI::max(force_floor, comm);
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::accept_step(const SolidSystem<dim> &system,
+                                          const double            time)
+  {
+    const auto &u = system.ghosted_solution();
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      Node &node          = node_list[j];
+      node.last_converged = node.reference_position;
+      for (unsigned int c = 0; c < dim; ++c)
+        node.last_converged[c] += u[node.dofs[c]];
+      data[j].accepted = data[j].lag;
+    }
+    place_bodies(time, poses_converged);
+    step_changes = 0;
+  }
+
+  template <int dim> void PotentialContact<dim>::begin_step()
+  {
+    for (auto &d : data)
+      d.lag = d.accepted;
+  }
+
+  template <int dim>
+  NodalPotentialInput PotentialContact<dim>::potential_input(
+      const unsigned int j, const Eigen::Vector3d &x, const Proximity &p) const
+  {
+    const NodeData     &d = data[j];
+    NodalPotentialInput in;
+    in.gap                 = p.body >= 0 ? p.gap : 1e300;
+    in.n                   = p.body >= 0 ? p.normal : Eigen::Vector3d::UnitZ();
+    in.multiplier          = d.lag.multiplier;
+    in.penalty             = d.penalty;
+    in.mu                  = parameters.friction_coefficient;
+    in.lagged_normal_force = d.lag.normal_force;
+    in.slip_tolerance      = parameters.slip_tolerance;
+    if (p.body >= 0 && in.multiplier - in.penalty * in.gap > 0)
+      in.H = this->normal_gradient(p, x, fd_step);
+    if (d.lag.body >= 0 && d.lag.normal_force > 0)
+    {
+      in.T = tangent_basis(d.lag.normal, dim);
+      // the node's motion relative to the rigid material point it sat at
+      // when the last step converged
+      const Pose &now = poses_now[d.lag.body][d.lag.geom];
+      const Pose &old = poses_converged[d.lag.body][d.lag.geom];
+      in.w = x - now.to_world(old.to_local(node_list[j].last_converged));
+      if (dim == 2)
+        in.w[2] = 0;
+    }
+    return in;
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::evaluate(const SolidSystem<dim> &system)
+  {
+    TimerOutput::Scope scope(timer, "contact");
+    place_bodies(current_time, poses_now);
+    const auto  &u      = system.ghosted_solution();
+    double       energy = 0;
+    unsigned int active = 0, slipping = 0, changes = 0;
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      Node           &node = node_list[j];
+      Eigen::Vector3d x    = node.reference_position;
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        node.free[c] = !system.constraint_set().is_constrained(node.dofs[c]);
+        x[c] += u[node.dofs[c]];
+      }
+      const Proximity      p = nearest(x);
+      const NodalPotential potential =
+          evaluate_nodal_potential(potential_input(j, x, p));
+      const ContactStatus before = node.status;
+      node.status                = potential.status;
+      node.body                  = p.body;
+      node.geom                  = p.geom;
+      node.gap                   = p.gap;
+      node.normal       = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
+      node.force        = potential.force;
+      node.slip         = potential.slip;
+      data[j].potential = potential;
+      energy += potential.energy;
+      active += node.status != ContactStatus::inactive;
+      slipping += node.status == ContactStatus::slip;
+      changes += node.status != before;
+    }
+    total_energy = Utilities::MPI::sum(energy, comm);
+    active_count = Utilities::MPI::sum(active, comm);
+    slip_count   = Utilities::MPI::sum(slipping, comm);
+    change_count = Utilities::MPI::sum(changes, comm);
+    step_changes += change_count;
+  }
+
+  template <int dim>
+  bool PotentialContact<dim>::settle(const SolidSystem<dim> &system,
+                                     std::string            &report)
+  {
+    (void)system;
+    // the converged state's normal forces and normals against the lagged
+    // ones the solve held fixed
+    double largest = 0, change = 0, turn = 0, penetration = 0;
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const Node     &node = node_list[j];
+      const NodeData &d    = data[j];
+      const double    f_n  = d.potential.normal_force;
+      largest              = std::max(largest, f_n);
+      change = std::max(change, std::abs(f_n - d.lag.normal_force));
+      if (f_n > 0 && d.lag.normal_force > 0)
+        turn = std::max(turn, (node.normal - d.lag.normal).norm());
+      if (node.body >= 0)
+        penetration = std::max(penetration, -node.gap / d.spacing);
+    }
+    largest                = Utilities::MPI::max(largest, comm);
+    change                 = Utilities::MPI::max(change, comm);
+    turn                   = Utilities::MPI::max(turn, comm);
+    penetration            = Utilities::MPI::max(penetration, comm);
+    const double tolerance = parameters.settle_tolerance;
+    const bool   settled   = change <= tolerance * largest + force_floor &&
+                         turn <= tolerance && penetration <= tolerance;
+    std::ostringstream line;
+    line << std::scientific << std::setprecision(2)
+         << "normal forces changed by " << change << " N (largest " << largest
+         << " N), normals by " << turn << " rad, penetration/spacing "
+         << penetration << (settled ? ": settled" : "");
+    report = line.str();
+    if (settled)
+      return true;
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const Node &node = node_list[j];
+      Lag        &lag  = data[j].lag;
+      lag.multiplier   = data[j].potential.normal_force; // Uzawa
+      lag.normal_force = data[j].potential.normal_force;
+      if (lag.normal_force > 0)
+      {
+        lag.normal = node.normal;
+        lag.body   = node.body;
+        lag.geom   = node.geom;
+      }
+      else
+        lag.body = -1;
+    }
+    return false;
+  }
+
+  template <int dim>
+  unsigned int PotentialContact<dim>::max_outer_iterations() const
+  {
+    return parameters.max_outer_iterations;
+  }
+
+  template <int dim> unsigned int PotentialContact<dim>::changes_in_step() const
+  {
+    return step_changes;
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::apply_to_residual(
+      TrilinosWrappers::MPI::Vector &residual) const
+  {
+    // residual = f_ext - f_int + the contact force (= -grad of the total)
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const Node &node = node_list[j];
+      for (unsigned int a = 0; a < dim; ++a)
+        if (node.free[a] && data[j].potential.force[a] != 0)
+          residual[node.dofs[a]] += data[j].potential.force[a];
+    }
+    residual.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::transform_cell_rows(
+      const std::vector<types::global_dof_index> &,
+      FullMatrix<double> &,
+      Vector<double> &) const
+  {
+    // the nodes keep their own equilibrium rows
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::add_constraints(AffineConstraints<double> &) const
+  {
+    // no constraints: contact acts through the potential
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::add_node_terms(
+      const AffineConstraints<double> &constraints,
+      TrilinosWrappers::SparseMatrix  &tangent,
+      TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    FullMatrix<double>                   H(dim, dim);
+    Vector<double>                       f(dim);
+    std::vector<types::global_dof_index> dofs(dim);
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const Node           &node = node_list[j];
+      const NodalPotential &p    = data[j].potential;
+      if (p.force.isZero(0) && p.hessian.isZero(0))
+        continue;
+      Eigen::Matrix3d hessian = p.hessian;
+      if (project)
+      {
+        // the nearest positive semi-definite matrix: negative eigenvalues
+        // (the curvature of the rigid surface) set to zero
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(hessian);
+        hessian = eigen.eigenvectors() *
+                  eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
+                  eigen.eigenvectors().transpose();
+      }
+      for (unsigned int a = 0; a < dim; ++a)
+      {
+        dofs[a] = node.dofs[a];
+        f[a]    = node.free[a] ? p.force[a] : 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          H(a, c) = node.free[a] && node.free[c] ? hessian(a, c) : 0;
+      }
+      constraints.distribute_local_to_global(H, f, dofs, tangent, rhs);
+    }
+    tangent.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+  }
+
+  template <int dim> bool PotentialContact<dim>::symmetric() const
+  {
+    return true;
+  }
+
+  template <int dim> bool PotentialContact<dim>::is_potential() const
+  {
+    return true;
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::project_to_positive(const bool on)
+  {
+    project = on;
+  }
+
+  template <int dim> double PotentialContact<dim>::energy() const
+  {
+    return total_energy;
+  }
+
+  template <int dim> std::string PotentialContact<dim>::iteration_report() const
+  {
+    std::ostringstream out;
+    out << "contact " << active_count << " closed (" << slip_count << " slip), "
+        << change_count << " changes";
+    return out.str();
+  }
+
+  template <int dim>
+  std::string
+  PotentialContact<dim>::describe_node(const types::global_dof_index dof) const
+  {
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const Node &node = node_list[j];
+      if (std::find(node.dofs.begin(), node.dofs.end(), dof) == node.dofs.end())
+        continue;
+      const char        *status[] = {"open", "sticking", "sliding"};
+      std::ostringstream out;
+      out << "a contact node, " << status[static_cast<int>(node.status)];
+      if (node.body >= 0)
+        out << ", nearest geom "
+            << this->bodies.geom_label(node.body, node.geom) << " at gap "
+            << node.gap << " m";
+      out << ", normal force " << data[j].potential.normal_force
+          << " N (lagged " << data[j].lag.normal_force << " N), slip "
+          << node.slip.norm() << " m, force (" << node.force.transpose()
+          << ") N";
+      return out.str();
+    }
+    return "";
+  }
+
+  template class PotentialContact<2>;
+  template class PotentialContact<3>;
+} // namespace softgrasp
+
+SOFTGRASP_REGISTER_CONTACT_ENFORCEMENT(
+    softgrasp::PotentialContact,
+    incremental_potential,
+    "incremental potential",
+    "each step the minimisation of one potential: an augmented Lagrangian "
+    "on the gap and friction as a lagged, smoothed dissipation potential, "
+    "Newton with a line search on the potential, outer iterations until "
+    "the normal forces and frames settle (cannot cycle between stick and "
+    "slip)")
