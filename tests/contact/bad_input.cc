@@ -2,7 +2,8 @@
 // file) and the fix: a contact surface without bodies and bodies without a
 // contact surface, an unknown geom type, bad trajectories (times not
 // increasing, zero quaternion, NaN, missing file), a mesh geom without its
-// file, a body without geoms, and a slave boundary id the mesh lacks.
+// file, a body without geoms, a slave boundary id the mesh lacks, an
+// unknown contact enforcement and a NaN penalty factor.
 #include "../contact_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
@@ -82,4 +83,14 @@ main(int argc, char **argv)
                    "subsection Rigid bodies\n set Names = finger\nend\n");
   expect_error("slave id not on the mesh",
                base() + contact("17", 0) + body(ok));
+  // a misspelt enforcement lists the registered ones; a NaN penalty is
+  // refused by its pattern
+  const std::string enforcement =
+      "subsection Contact\n set Enforcement = incremental potentail\nend\n";
+  expect_error("unknown contact enforcement",
+               base() + contact("5", 0) + body(ok) + enforcement);
+  expect_error("NaN penalty factor",
+               base() + contact("5", 0) + body(ok) +
+                   "subsection Contact\n set Enforcement = incremental "
+                   "potential\n set Penalty factor = nan\nend\n");
 }
