@@ -12,7 +12,7 @@ set(SOFTGRASP_QUICK_TESTS
   materials/tangent_consistency materials/presets
   postprocess/principal_strains postprocess/tissue_injury.mpirun=2
   mechanics/bad_input mechanics/implicit_dynamics
-  mechanics/cook_membrane_reference
+  mechanics/cook_membrane_reference mechanics/potential_derivatives
   meshes/generated_shapes rigid/shapes io/kinematics_file
   contact/nodal_law explicit/internal_force solvers/custom_stepper
   mujoco/capsule_distance

@@ -686,6 +686,18 @@ namespace softgrasp
   }
 
   template <int dim>
+  const TrilinosWrappers::MPI::Vector &SolidSystem<dim>::residual_vector() const
+  {
+    return residual;
+  }
+
+  template <int dim>
+  const TrilinosWrappers::SparseMatrix &SolidSystem<dim>::tangent_matrix() const
+  {
+    return tangent;
+  }
+
+  template <int dim>
   const TrilinosWrappers::MPI::Vector &SolidSystem<dim>::internal_forces() const
   {
     return f_int;

@@ -166,6 +166,14 @@ namespace softgrasp
     /// f_int and f_ext (N) of the last assembly (owned entries valid).
     const dealii::TrilinosWrappers::MPI::Vector &internal_forces() const;
     const dealii::TrilinosWrappers::MPI::Vector &external_forces() const;
+    /// The residual f_ext - f_int (+ the nodal conditions' forces) of the
+    /// last assembly (N), zero in constrained rows: with a potential, its
+    /// negative gradient on the free dofs.
+    const dealii::TrilinosWrappers::MPI::Vector &residual_vector() const;
+    /// The tangent of the last assemble(true) (N/m), rows and columns of
+    /// constrained dofs condensed; with a split volumetric coupling the
+    /// displacement block only.
+    const dealii::TrilinosWrappers::SparseMatrix &tangent_matrix() const;
     /// Hanging-node and Dirichlet constraints (homogeneous form).
     const dealii::AffineConstraints<double> &constraint_set() const;
     const dealii::IndexSet                  &locally_owned_dofs() const;
