@@ -83,6 +83,53 @@ namespace softgrasp_tests
   }
 
   /**
+   * The contact patch test: a flat rigid plate (plane geom 'plate'/'face',
+   * its normal down) compresses a randomly distorted neo-Hookean block
+   * (10 mm, mu = 10 kPa, nu = 0.3, degree @p degree) by 10 % in 4 steps,
+   * frictionless, on rollers at x = 0, y = 0 (and z = 0); contact on the
+   * top face. Newton to 1e-12, direct solves; the caller adds 'Output'.
+   */
+  inline std::string plate_compression_prm(const unsigned int dim,
+                                           const unsigned int degree)
+  {
+    std::ostringstream prm;
+    prm << (dim == 3
+                ? block(
+                      "0, 0, 0", "0.01, 0.01, 0.01", "3, 3, 3", "1, 1, 1", 0.2)
+                : block("0, 0", "0.01, 0.01", "4, 3", "1, 1", 0.2))
+        << "subsection Finite element\n set Polynomial degree = " << degree
+        << "\nend\n"
+        << neo_hookean(10e3, 0.3) << "subsection Boundary conditions\n"
+        << " set Dirichlet boundary ids = 0, 2" << (dim == 3 ? ", 4" : "")
+        << "\n subsection Dirichlet boundary 0\n  set Components = x\n end\n"
+        << " subsection Dirichlet boundary 2\n  set Components = y\n end\n"
+        << (dim == 3 ? " subsection Dirichlet boundary 4\n  set Components = "
+                       "z\n end\n"
+                     : "")
+        << "end\n"
+        << contact(dim == 3 ? "5" : "3", 0)
+        // the plane's normal (local z) points down: along -z in 3D, along
+        // -y in 2D (the plane problem lies in x-y)
+        << rigid_body(
+               "plate",
+               "face",
+               "plane",
+               "1",
+               "0: " + std::string(dim == 3 ? "0, 0, 0.01" : "0, 0.01, 0") +
+                   ", 1, 0, 0, 0; 1: " +
+                   std::string(dim == 3 ? "0, 0, 0.009" : "0, 0.009, 0") +
+                   ", 1, 0, 0, 0",
+               dim == 3 ? "0, 1, 0, 0"
+                        : "0.70710678118654752, 0.70710678118654752, 0, 0")
+        << "subsection Time\n set End time = 1\n set Time step = 0.25\nend\n"
+        << "subsection Newton\n set Relative tolerance = 1e-12\nend\n"
+        << "subsection Linear solver\n set Type = direct\nend\n"
+        << "subsection Output\n set VTU interval = 0\n set Verbose = false\n"
+        << "end\n";
+    return prm.str();
+  }
+
+  /**
    * The plane-strain frictional drag of examples/frictional_drag: a rigid
    * cylinder (R = 10 mm, geom finger/link, reference normal -y) pressed
    * 5 mm into a 120 x 20 mm block (G = 17.2 kPa, nu = 0.45, Q1 mixed u-p-J,

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <softgrasp/mechanics/newton_solver.h>
 #include <sstream>
 
@@ -137,8 +138,11 @@ namespace softgrasp
     // s0 = -dE/dalpha at alpha = 0 (the residual is -grad E)
     const double s0 = system.residual_dot(du);
     // the energy's round-off: sums of terms of the size of E0 and of the
-    // work along the full step
-    const double       noise = 1e-11 * (std::abs(E0) + std::abs(s0)) + 1e-300;
+    // work along the full step; at rest (E0 = 0) the work of the absolute
+    // force tolerance over the round-off length
+    const double floor = parameters.absolute_tolerance *
+                         parameters.increment_tolerance * system.length_scale();
+    const double       noise = 1e-11 * (std::abs(E0) + std::abs(s0)) + floor;
     const unsigned int max_steps =
         std::max(parameters.max_line_search_steps, 20u);
     double alpha = 1.0;
@@ -155,9 +159,12 @@ namespace softgrasp
         continue;
       }
       // with boundary values still being imposed, E is not minimised along
-      // du; without descent the full step stands
+      // du; without descent the full step stands; so it does where the
+      // decrease Newton predicts (s0 / 2) is below the round-off of E,
+      // which no comparison of energies can resolve
       const double change = state.energy - E0;
-      if (jump || !(s0 > 0) || change <= -1e-4 * alpha * s0 + noise)
+      if (jump || !(s0 > 0) || s0 <= 1e-12 * std::abs(E0) + floor ||
+          change <= -1e-4 * alpha * s0 + noise)
         break;
       if (ls >= max_steps)
       {
@@ -216,6 +223,62 @@ namespace softgrasp
   }
 
   template <int dim>
+  typename NewtonSolver<dim>::Descent
+  NewtonSolver<dim>::direction(SolidSystem<dim>              &system,
+                               TrilinosWrappers::MPI::Vector &du,
+                               const double                   tolerance,
+                               const bool                     descend,
+                               const bool                     confirm,
+                               typename SolidSystem<dim>::AssemblyResult &state,
+                               Result &result) const
+  {
+    const auto tangent_state = system.assemble(true);
+    if (!tangent_state.ok)
+    {
+      state = tangent_state;
+      return Descent::reassemble; // reported at the top of the loop
+    }
+    // a direction that only confirms convergence by its decrement need
+    // not be accurate (an iterative solve to 0.1 of the residual)
+    const auto linear = system.solve(
+        du, confirm ? 0.1 : forcing_term(result.residuals, tolerance));
+    result.linear_iterations += linear.iterations;
+    log << ", " << linear.iterations << " linear its";
+    result.failure = failure_of(linear);
+    if (!result.failure.empty())
+    {
+      log << std::endl;
+      return Descent::failed;
+    }
+    // (a direction that only confirms convergence converges if it does
+    // not descend: its decrement is not positive)
+    if (descend && !confirm && !(system.residual_dot(du) > 0))
+      return make_descent(system, du, tolerance, state, result);
+    return Descent::ready;
+  }
+
+  template <int dim>
+  void NewtonSolver<dim>::log_iterate(
+      const SolidSystem<dim>                          &system,
+      const unsigned int                               it,
+      const typename SolidSystem<dim>::AssemblyResult &state,
+      const double                                     tolerance,
+      const double                                     violation,
+      const bool                                       potential) const
+  {
+    log << "    Newton " << std::setw(2) << it << ": |r| = " << std::scientific
+        << std::setprecision(3) << state.residual_norm;
+    if (potential)
+      log << " (largest " << state.residual_max << ", tolerance " << tolerance
+          << ")";
+    else
+      log << " (tolerance " << tolerance << ")";
+    log << ", |g - u| = " << violation << std::defaultfloat;
+    if (system.has_nodal_conditions())
+      log << ", " << system.nodal_conditions_report();
+  }
+
+  template <int dim>
   typename NewtonSolver<dim>::Result
   NewtonSolver<dim>::iterate(SolidSystem<dim> &system) const
   {
@@ -225,6 +288,13 @@ namespace softgrasp
     auto                          state     = system.assemble(false);
     TrilinosWrappers::MPI::Vector du;
     double                        last_increment = 0; // max |alpha du| (m)
+    // a potential's minimisation: line search on it, converged on the
+    // largest residual entry and the Newton decrement du . r (J) of the
+    // last full step or, failing that, of a direction at the iterate
+    const bool potential = system.has_nodal_conditions() &&
+                           system.has_potential() && parameters.line_search;
+    const double E_start        = state.energy;
+    double       last_decrement = std::numeric_limits<double>::infinity();
 
     for (unsigned int it = 0;; ++it)
     {
@@ -236,76 +306,85 @@ namespace softgrasp
       const double tolerance =
           std::max(parameters.relative_tolerance * state.force_scale,
                    parameters.absolute_tolerance);
-      const double u_scale = std::max(u.linfty_norm(), 1e-300);
-      log << "    Newton " << std::setw(2) << it
-          << ": |r| = " << std::scientific << std::setprecision(3)
-          << state.residual_norm << " (tolerance " << tolerance
-          << "), |g - u| = " << violation << std::defaultfloat;
-      if (system.has_nodal_conditions())
-        log << ", " << system.nodal_conditions_report();
+      const double decrement_tolerance =
+          parameters.relative_tolerance *
+          (std::abs(state.energy) + std::abs(E_start - state.energy));
+      const bool imposed =
+          violation <= 1e-12 * std::max(u.linfty_norm(), 1e-300);
+      log_iterate(system, it, state, tolerance, violation, potential);
       const bool increment_small =
           it > 0 && last_increment <=
                         parameters.increment_tolerance * system.length_scale();
-      if (violation <= 1e-12 * u_scale &&
-          (state.residual_norm <= tolerance || increment_small))
-      {
-        log << (increment_small && state.residual_norm > tolerance
-                    ? "  converged (update at round-off)"
-                    : "  converged")
-            << std::endl;
-        result.converged  = true;
-        result.iterations = it;
+      const bool small = potential ? state.residual_max <= tolerance &&
+                                         last_decrement <= decrement_tolerance
+                                   : state.residual_norm <= tolerance;
+      if (imposed && (small || increment_small))
+        return converged(it, small, result);
+      // with a potential, a small residual after a damped step (or none)
+      // is confirmed by the decrement at the iterate
+      const bool confirm =
+          potential && imposed && state.residual_max <= tolerance;
+      if (it == parameters.max_iterations && !confirm)
+        return fail_at_limit(system, it, result);
+      const Descent descent = direction(
+          system, du, tolerance, potential && imposed, confirm, state, result);
+      if (descent == Descent::reassemble)
+        continue;
+      if (descent == Descent::failed)
         return result;
-      }
-      if (it == parameters.max_iterations)
+      if (potential)
       {
-        log << std::endl;
-        result.iterations = it;
-        result.failure    = "no convergence in " + std::to_string(it) +
-                         " Newton iterations (" +
-                         system.describe_largest_residual() + ")";
-        return result;
-      }
-
-      const auto tangent_state = system.assemble(true);
-      if (!tangent_state.ok)
-      {
-        state = tangent_state;
-        continue; // reported at the top of the loop
-      }
-      const auto linear =
-          system.solve(du, forcing_term(result.residuals, tolerance));
-      result.linear_iterations += linear.iterations;
-      log << ", " << linear.iterations << " linear its";
-      result.failure = failure_of(linear);
-      if (!result.failure.empty())
-      {
-        log << std::endl;
-        return result;
-      }
-
-      const bool potential = system.has_nodal_conditions() &&
-                             system.has_potential() && parameters.line_search;
-      if (potential && violation <= 1e-12 * u_scale &&
-          !(system.residual_dot(du) > 0))
-      {
-        const Descent descent =
-            make_descent(system, du, tolerance, state, result);
-        if (descent == Descent::reassemble)
-          continue;
-        if (descent == Descent::failed)
-          return result;
+        last_decrement = system.residual_dot(du);
+        log << ", decrement " << std::scientific << std::setprecision(3)
+            << last_decrement << std::defaultfloat;
+        if (confirm && last_decrement <= decrement_tolerance)
+          return converged(it, true, result);
+        if (it == parameters.max_iterations)
+          return fail_at_limit(system, it, result);
       }
       const double alpha =
           potential
               ? potential_line_search(system, du, violation, state, result)
-              : line_search(system, du, u_scale, violation, state);
+              : line_search(system,
+                            du,
+                            std::max(u.linfty_norm(), 1e-300),
+                            violation,
+                            state);
       last_increment = alpha * du.linfty_norm();
       if (alpha < 1)
+      {
         log << ", line search alpha = " << alpha;
+        last_decrement = std::numeric_limits<double>::infinity();
+      }
       log << std::endl;
       result.iterations = it + 1;
     }
+  }
+
+  template <int dim>
+  typename NewtonSolver<dim>::Result NewtonSolver<dim>::converged(
+      const unsigned int iterations, const bool small, Result &result) const
+  {
+    log << (small ? "  converged" : "  converged (update at round-off)")
+        << std::endl;
+    result.converged  = true;
+    result.iterations = iterations;
+    return result;
+  }
+
+  template <int dim>
+  typename NewtonSolver<dim>::Result
+  NewtonSolver<dim>::fail_at_limit(const SolidSystem<dim> &system,
+                                   const unsigned int      iterations,
+                                   Result                 &result) const
+  {
+    log << std::endl;
+    result.iterations = iterations;
+    result.failure    = "no convergence in " + std::to_string(iterations) +
+                     " Newton iterations (" +
+                     system.describe_largest_residual() +
+                     "); 'Newton/Maximum iterations' allows more";
+    return result;
   }
 
   template <int dim>

@@ -360,6 +360,7 @@ namespace softgrasp
     if (nodal_conditions != nullptr)
       result.energy += nodal_conditions->energy();
     result.residual_norm = residual.l2_norm();
+    result.residual_max  = residual.linfty_norm();
     result.force_scale   = std::max(f_int.l2_norm(), f_ext.l2_norm());
     return result;
   }

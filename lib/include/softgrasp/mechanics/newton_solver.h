@@ -11,13 +11,24 @@ namespace softgrasp
 {
   /**
    * Newton-Raphson for the equilibrium of a SolidSystem at the current time
-   * of its boundary conditions, with a backtracking line search on the
-   * residual norm that also halves updates which would invert an element.
+   * of its boundary conditions, with a line search on the energy slope
+   * that also halves updates which would invert an element.
    *
    * Converged when the boundary values are reached and
    *   |r| <= max(relative tolerance * force scale, absolute tolerance),
    * where r is f_int - f_ext on the free dofs and the force scale is
    * max(|f_int|, |f_ext|) over all dofs (so reactions count).
+   *
+   * When the step minimises a potential E (nodal conditions that are one,
+   * SolidSystem::has_potential(); 'Contact/Enforcement = incremental
+   * potential') the line search is on E (potential_line_search()) and the
+   * solve is converged when the largest residual entry is within that
+   * tolerance and the Newton decrement du . r = du^T K du (twice the
+   * decrease of E that Newton predicts) at most the relative tolerance
+   * times |E| + |E_start - E| (E_start: at the start of the solve); the
+   * log shows both. The decrement is that of the last step if it was a
+   * full one; otherwise a direction is solved at the iterate (loosely,
+   * only to confirm) and taken if its decrement is not small.
    *
    * On failure the system holds the last iterate; the caller restores the
    * last converged state and cuts the step back.
@@ -75,6 +86,41 @@ namespace softgrasp
     };
 
     /**
+     * The Newton direction @p du at the last assembled state: the tangent
+     * assembled and solved (to the forcing term of @p tolerance, N); with
+     * @p descend, a direction that does not descend on the potential is
+     * made one (make_descent()); with @p confirm, a loose solve that only
+     * confirms convergence by the decrement.
+     */
+    Descent direction(SolidSystem<dim>                          &system,
+                      dealii::TrilinosWrappers::MPI::Vector     &du,
+                      const double                               tolerance,
+                      const bool                                 descend,
+                      const bool                                 confirm,
+                      typename SolidSystem<dim>::AssemblyResult &state,
+                      Result                                    &result) const;
+
+    /// The line of iterate @p it in the Newton log (without its end).
+    void log_iterate(const SolidSystem<dim>                          &system,
+                     const unsigned int                               it,
+                     const typename SolidSystem<dim>::AssemblyResult &state,
+                     const double                                     tolerance,
+                     const double                                     violation,
+                     const bool potential) const;
+
+    /// @p result converged after @p iterations (@p small: by the
+    /// tolerances, otherwise by an update at round-off).
+    Result converged(const unsigned int iterations,
+                     const bool         small,
+                     Result            &result) const;
+
+    /// @p result after 'Newton/Maximum iterations' without convergence,
+    /// naming the largest residual.
+    Result fail_at_limit(const SolidSystem<dim> &system,
+                         const unsigned int      iterations,
+                         Result                 &result) const;
+
+    /**
      * A Newton direction @p du that does not descend on the potential:
      * solved again with the nodal conditions' Hessians projected to
      * positive semi-definite and, if that does not descend either,
@@ -90,8 +136,11 @@ namespace softgrasp
      * The line search of a potential's minimisation: backtracking from the
      * full step until the potential E decreases by at least 1e-4 alpha
      * times its slope (Armijo), the step cut by a safeguarded quadratic
-     * fit; updates that invert an element are halved. Updates @p violation
-     * and @p state (whose energy is E at the start) and counts the
+     * fit; updates that invert an element are halved. The full step stands
+     * where the predicted decrease is below 1e-12 |E| plus the work of
+     * 'Absolute tolerance' over 'Increment tolerance' times the domain
+     * size (round-off). Updates @p
+     * violation and @p state (whose energy is E at the start) and counts the
      * accepted updates that did not decrease E in @p result.
      */
     double

@@ -41,6 +41,7 @@ namespace softgrasp
       std::string failed_cell;       ///< where, if !ok
       double      failed_J      = 0; ///< the J found there
       double      residual_norm = 0; ///< |f_int - f_ext| on free dofs (N)
+      double      residual_max  = 0; ///< its largest entry (N)
       double      force_scale   = 0; ///< max(|f_int|, |f_ext|) (N)
       /// The step's potential: strain energy + inertia term - f_ext . u +
       /// the nodal conditions' potential (J; J/m in 2D). Exact for dead
