@@ -6,6 +6,7 @@
 //                 [global refinements] [nu] [depth (m)]
 //                 [inexact linear solves: true|false]
 //                 [block preconditioner: true|false] [reuse AMG: true|false]
+//                 [contact enforcement, e.g. "incremental potential"]
 //   mpirun -np 2 hertz_contact 8 1.5 0.05 2 4 iterative 1
 //
 // Prints the force and the contact radius against Hertz's values, Newton
@@ -37,6 +38,7 @@ main(int argc, char **argv)
   const std::string  inexact     = argc > 10 ? argv[10] : "true";
   const std::string  block       = argc > 11 ? argv[11] : "true";
   const std::string  reuse_amg   = argc > 12 ? argv[12] : "true";
+  const std::string enforcement = argc > 13 ? argv[13] : "lagrange multipliers";
 
   ParameterHandler prm;
   softgrasp::Simulation<3>::declare_parameters(prm);
@@ -57,7 +59,9 @@ main(int argc, char **argv)
           "subsection Newton\n set Inexact linear solves = " + inexact +
           "\nend\nsubsection Linear solver\n set Block "
           "preconditioner = " +
-          block + "\n set Reuse AMG = " + reuse_amg + "\nend\n",
+          block + "\n set Reuse AMG = " + reuse_amg +
+          "\nend\nsubsection Contact\n set Enforcement = " + enforcement +
+          "\nend\n",
       "benchmark");
   softgrasp::Simulation<3> solver(comm, softgrasp::SolverInputs<3>::parse(prm));
   solver.run();
@@ -70,9 +74,12 @@ main(int argc, char **argv)
   if (Utilities::MPI::this_mpi_process(comm) == 0)
   {
     const auto &history = solver.history();
-    double      newton = 0, changes = 0, linear = 0;
+    double      newton = 0, changes = 0, linear = 0, outer = 0;
+    const bool  potential = enforcement == "incremental potential";
     for (std::size_t row = 1; row < history.rows.size(); ++row)
     {
+      if (potential)
+        outer += history.value(row, "outer_iterations");
       newton += history.value(row, "newton_iterations");
       linear += history.value(row, "linear_iterations");
       changes += history.value(row, "active_set_changes");
@@ -82,12 +89,14 @@ main(int argc, char **argv)
               << " refinements=" << refinements << " Q" << degree
               << " dofs=" << solver.system().n_dofs()
               << " ranks=" << Utilities::MPI::n_mpi_processes(comm)
-              << "\n  force " << force << " N, error "
-              << 100 * (force / exact.force - 1) << " %"
+              << " enforcement=" << enforcement << "\n  force " << force
+              << " N, error " << 100 * (force / exact.force - 1) << " %"
               << "\n  contact radius (gap edge) " << radius * 1e3
               << " mm, error " << 100 * (radius / exact.radius - 1) << " %"
               << "\n  Newton iterations per step " << newton / n_steps
               << ", active-set changes per step " << changes / n_steps
+              << ", outer iterations per step "
+              << (potential ? outer / n_steps : 1.0)
               << "\n  linear iterations per Newton step " << linear / newton
               << std::endl;
     const double steps_time = times["contact"] + times["assembly"] +
@@ -97,7 +106,8 @@ main(int argc, char **argv)
               << 100 * times["contact"] / steps_time
               << " % of the load steps), assembly " << times["assembly"]
               << " s, residual " << times["residual"] << " s, linear solve "
-              << times["linear solve"] << " s, setup " << times["setup"] << " s"
-              << std::endl;
+              << times["linear solve"] << " s, setup " << times["setup"]
+              << " s, load steps and setup " << steps_time + times["setup"]
+              << " s" << std::endl;
   }
 }

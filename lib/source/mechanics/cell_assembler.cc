@@ -143,8 +143,10 @@ namespace softgrasp
     const unsigned int n = cell->get_fe().n_dofs_per_cell();
     copy.dof_indices.resize(n);
     cell->get_dof_indices(copy.dof_indices);
-    copy.cell_index = cell->active_cell_index();
-    copy.energy     = 0;
+    copy.cell_index     = cell->active_cell_index();
+    copy.energy         = 0;
+    copy.strain_energy  = 0;
+    copy.load_potential = 0;
     copy.internal.reinit(n);
     copy.external.reinit(n);
     if (with_matrix)
@@ -163,7 +165,8 @@ namespace softgrasp
       // minus the work of the external forces at their present values
       // (exact for dead loads)
       for (unsigned int k = 0; k < n; ++k)
-        copy.energy -= copy.external[k] * u[copy.dof_indices[k]];
+        copy.load_potential -= copy.external[k] * u[copy.dof_indices[k]];
+      copy.energy += copy.load_potential;
     }
     catch (const InvertedMaterialState &e)
     {
@@ -342,11 +345,13 @@ namespace softgrasp
       const double                  JxW = scratch.JxW[q];
       // the condensed u-p-J energy int Psi_iso + U(J~) dV: with J~ the
       // projection of J onto the pressure space, int p~ (J - J~) dV = 0
-      copy.energy +=
+      const double strain =
           (response.energy + (mixed ? material.volumetric_energy().energy(
                                           scratch.dilatation.dilatation(q))
                                     : 0.)) *
           fe_values.JxW(q);
+      copy.energy += strain;
+      copy.strain_energy += strain;
 
       // f_(I c) = int (tau grad_x N_I)_c dV
       for (unsigned int I = 0; I < n_nodes; ++I)

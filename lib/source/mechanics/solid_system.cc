@@ -325,6 +325,8 @@ namespace softgrasp
         return;
       }
       result.energy += copy.energy;
+      result.strain_energy += copy.strain_energy;
+      result.load_potential += copy.load_potential;
       Vector<double> cell_rhs(copy.external);
       cell_rhs -= copy.internal;
       f_int.add(copy.dof_indices, copy.internal);
@@ -352,17 +354,28 @@ namespace softgrasp
 
     compress_assembly(with_matrix);
     if (share_failure(result))
-      return result;
+      return last_result = result;
     if (recording)
       dilatation_state.set_recorded(true);
     apply_nodal_conditions(with_matrix);
     result.energy = Utilities::MPI::sum(result.energy, communicator());
+    result.strain_energy =
+        Utilities::MPI::sum(result.strain_energy, communicator());
+    result.load_potential =
+        Utilities::MPI::sum(result.load_potential, communicator());
     if (nodal_conditions != nullptr)
       result.energy += nodal_conditions->energy();
     result.residual_norm = residual.l2_norm();
     result.residual_max  = residual.linfty_norm();
     result.force_scale   = std::max(f_int.l2_norm(), f_ext.l2_norm());
-    return result;
+    return last_result   = result;
+  }
+
+  template <int dim>
+  const typename SolidSystem<dim>::AssemblyResult &
+  SolidSystem<dim>::last_assembly() const
+  {
+    return last_result;
   }
 
   template <int dim> void SolidSystem<dim>::begin_newton_solve()

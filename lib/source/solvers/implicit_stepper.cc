@@ -356,7 +356,16 @@ namespace softgrasp
         {"cut_backs", double(cut_backs)},
         {"wall_time", run.progress().elapsed()}};
     if (dynamic)
+    {
+      // the state's energies (the last assembly is of the converged
+      // state): with a dead load kinetic + internal + load potential is
+      // the mechanical energy, which backward Euler dissipates at first
+      // order in the step
+      const auto &energies = run.solid().last_assembly();
       leading.emplace_back("kinetic_energy", kinetic_energy(run));
+      leading.emplace_back("internal_energy", energies.strain_energy);
+      leading.emplace_back("load_potential", energies.load_potential);
+    }
     previous_time = time;
     HistoryValues trailing;
     if (mortar)

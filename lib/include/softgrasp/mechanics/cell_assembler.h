@@ -72,7 +72,10 @@ namespace softgrasp
     /// condensed u-p-J energy for the mixed formulation) plus the inertia
     /// term minus the work of the external forces at their present values
     /// (J; J/m in 2D).
-    double      energy   = 0;
+    double energy = 0;
+    /// Its parts: the strain energy, and minus the work of the external
+    /// forces at their present values, -f_ext . u (J; J/m in 2D).
+    double      strain_energy = 0, load_potential = 0;
     bool        failed   = false; ///< inverted element
     double      failed_J = 0;
     std::string failed_cell;

@@ -47,6 +47,9 @@ namespace softgrasp
       /// the nodal conditions' potential (J; J/m in 2D). Exact for dead
       /// loads; a follower pressure has none (has_potential() is false).
       double energy = 0;
+      /// Its parts: the strain energy (the condensed u-p-J energy with the
+      /// mixed formulation) and -f_ext . u (J; J/m in 2D).
+      double strain_energy = 0, load_potential = 0;
     };
 
     SolidSystem(dealii::parallel::distributed::Triangulation<dim> &tria,
@@ -78,6 +81,8 @@ namespace softgrasp
 
     /// Assemble f_int - f_ext (and the tangent) at the current solution.
     AssemblyResult assemble(const bool with_matrix);
+    /// What the last assemble() returned (on every process).
+    const AssemblyResult &last_assembly() const;
 
     /**
      * Start a Newton solve: with the mixed formulation, the element
@@ -247,6 +252,7 @@ namespace softgrasp
     dealii::TrilinosWrappers::MPI::Vector      u_start, du_ghosted;
     bool                                       with_tangent = true;
     InertiaTerm                                inertia;
+    AssemblyResult                             last_result;
   };
 } // namespace softgrasp
 
