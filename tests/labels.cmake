@@ -29,7 +29,9 @@ set(SOFTGRASP_QUICK_TESTS
 # long: every test that took over 60 s on 2 cores under ctest -j2
 # (doc/benchmarks.md, "Build and test times").
 set(SOFTGRASP_LONG_TESTS
-  mujoco/grasp_pull_fe mujoco/sweep_recovery)
+  mujoco/grasp_pull_fe mujoco/sweep_recovery
+  contact/potential_agreement contact/potential_agreement.mpirun=2
+  contact/drag_potential)
 
 # Label the tests of the current directory: the category (the name up to
 # its '/'), and 'quick' and 'long' from the lists above.

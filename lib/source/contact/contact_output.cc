@@ -6,6 +6,32 @@ namespace softgrasp
 {
   using namespace dealii;
 
+  std::vector<LateralForceDrop>
+  lateral_force_drops(const ContactForceRecord &before,
+                      const ContactForceRecord &after,
+                      const double              threshold)
+  {
+    std::vector<LateralForceDrop> drops;
+    for (unsigned int b = 0;
+         b < std::min(before.forces.size(), after.forces.size());
+         ++b)
+      for (unsigned int g = 0;
+           g < std::min(before.forces[b].size(), after.forces[b].size());
+           ++g)
+      {
+        const GeomContactForce &f0 = before.forces[b][g];
+        LateralForceDrop        drop;
+        drop.body   = b;
+        drop.geom   = g;
+        drop.before = f0.lateral_part.norm();
+        drop.after  = after.forces[b][g].lateral_part.norm();
+        if (drop.before > 0.05 * std::abs(f0.normal_force()) &&
+            drop.before > 0 && drop.fraction() > threshold)
+          drops.push_back(drop);
+      }
+    return drops;
+  }
+
   std::pair<Eigen::Vector3d, Eigen::Vector3d>
   body_resultant(const RigidBody                     &body,
                  const std::vector<GeomContactForce> &forces,

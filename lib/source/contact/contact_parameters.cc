@@ -85,6 +85,30 @@ namespace softgrasp
                       "Incremental potential: the most outer iterations of "
                       "one step; a step that has not settled after them is "
                       "cut back. Unit: 1.");
+    prm.declare_entry(
+        "Maximum Newton iterations",
+        "100",
+        Patterns::Integer(1, 10000),
+        "Incremental potential: the most Newton iterations of one "
+        "minimisation (the larger of this and 'Newton/Maximum "
+        "iterations'). Every iteration lowers the potential, so a long "
+        "solve makes progress: where the rigid body moves into the tissue "
+        "or nodes pass between stick and slip, the line search takes short "
+        "steps (of the order of the slip length) for tens of iterations "
+        "before Newton converges fast. Unit: 1.");
+    prm.declare_entry(
+        "Unsettled steps",
+        "accept",
+        Patterns::Selection("accept|cut back"),
+        "Incremental potential: what happens to a step whose outer "
+        "iterations have not settled after 'Maximum outer iterations' "
+        "(its Newton solves converged, so it is an equilibrium with the "
+        "lagged normal forces, but friction may exceed Coulomb's bound "
+        "against the current ones; this happens where a contact patch "
+        "passes from stick to slip). 'accept': keep it with a warning, its "
+        "Coulomb excess in the history ('coulomb_excess', 'unsettled'); "
+        "'cut back': retry with a smaller step, and stop the run when the "
+        "cut-backs are used up.");
     prm.leave_subsection();
   }
 
@@ -110,10 +134,12 @@ namespace softgrasp
                        "' is not a contact enforcement. Valid names are: " +
                        ContactEnforcementRegistry<3>::names_separated_by(", ") +
                        ". Fix: use one of them.");
-    penalty_factor       = prm.get_double("Penalty factor");
-    slip_tolerance       = prm.get_double("Slip tolerance");
-    settle_tolerance     = prm.get_double("Settle tolerance");
-    max_outer_iterations = prm.get_integer("Maximum outer iterations");
+    penalty_factor        = prm.get_double("Penalty factor");
+    slip_tolerance        = prm.get_double("Slip tolerance");
+    settle_tolerance      = prm.get_double("Settle tolerance");
+    max_outer_iterations  = prm.get_integer("Maximum outer iterations");
+    max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+    accept_unsettled      = prm.get("Unsettled steps") == "accept";
     prm.leave_subsection();
   }
 } // namespace softgrasp

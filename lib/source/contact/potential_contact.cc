@@ -143,23 +143,28 @@ namespace softgrasp
     (void)system;
     // the converged state's normal forces and normals against the lagged
     // ones the solve held fixed
-    double largest = 0, change = 0, turn = 0, penetration = 0;
+    double       largest = 0, change = 0, turn = 0, penetration = 0;
+    double       beyond = 0; // the largest |f_t| - mu lambda (N)
+    const double mu     = parameters.friction_coefficient;
     for (unsigned int j = 0; j < node_list.size(); ++j)
     {
       const Node     &node = node_list[j];
       const NodeData &d    = data[j];
       const double    f_n  = d.potential.normal_force;
       largest              = std::max(largest, f_n);
+      beyond = std::max(beyond, d.potential.friction.norm() - mu * f_n);
       change = std::max(change, std::abs(f_n - d.lag.normal_force));
       if (f_n > 0 && d.lag.normal_force > 0)
         turn = std::max(turn, (node.normal - d.lag.normal).norm());
       if (node.body >= 0)
         penetration = std::max(penetration, -node.gap / d.spacing);
     }
-    largest                = Utilities::MPI::max(largest, comm);
-    change                 = Utilities::MPI::max(change, comm);
-    turn                   = Utilities::MPI::max(turn, comm);
-    penetration            = Utilities::MPI::max(penetration, comm);
+    largest     = Utilities::MPI::max(largest, comm);
+    change      = Utilities::MPI::max(change, comm);
+    turn        = Utilities::MPI::max(turn, comm);
+    penetration = Utilities::MPI::max(penetration, comm);
+    beyond      = Utilities::MPI::max(beyond, comm);
+    excess      = mu * largest > 0 ? std::max(0.0, beyond) / (mu * largest) : 0;
     const double tolerance = parameters.settle_tolerance;
     const bool   settled   = change <= tolerance * largest + force_floor &&
                          turn <= tolerance && penetration <= tolerance;
@@ -167,7 +172,8 @@ namespace softgrasp
     line << std::scientific << std::setprecision(2)
          << "normal forces changed by " << change << " N (largest " << largest
          << " N), normals by " << turn << " rad, penetration/spacing "
-         << penetration << (settled ? ": settled" : "");
+         << penetration << ", Coulomb excess " << excess
+         << (settled ? ": settled" : "");
     report = line.str();
     if (settled)
       return true;
@@ -193,6 +199,22 @@ namespace softgrasp
   unsigned int PotentialContact<dim>::max_outer_iterations() const
   {
     return parameters.max_outer_iterations;
+  }
+
+  template <int dim>
+  unsigned int PotentialContact<dim>::max_newton_iterations() const
+  {
+    return parameters.max_newton_iterations;
+  }
+
+  template <int dim> bool PotentialContact<dim>::accept_unsettled() const
+  {
+    return parameters.accept_unsettled;
+  }
+
+  template <int dim> double PotentialContact<dim>::coulomb_excess() const
+  {
+    return excess;
   }
 
   template <int dim> unsigned int PotentialContact<dim>::changes_in_step() const

@@ -85,10 +85,16 @@ namespace softgrasp
   template <int dim>
   void ImplicitStepper<dim>::run(const SimulationAccess<dim> &run)
   {
-    newton = std::make_unique<NewtonSolver<dim>>(run.parameters().newton,
-                                                 run.verbose_out());
     if (!run.has_contact())
       mortar = nullptr;
+    // a minimisation (the incremental potential) may ask for more
+    // iterations than a semi-smooth solve needs
+    NewtonParameters newton_parameters = run.parameters().newton;
+    if (mortar)
+      newton_parameters.max_iterations = std::max(
+          newton_parameters.max_iterations, mortar->max_newton_iterations());
+    newton = std::make_unique<NewtonSolver<dim>>(newton_parameters,
+                                                 run.verbose_out());
     start(run);
     const auto &time  = run.parameters().time;
     RunState   &state = run.state();
@@ -119,6 +125,10 @@ namespace softgrasp
         break;
       }
     }
+    if (unsettled_steps > 0)
+      run.out() << unsettled_steps << " step(s) accepted with the contact's "
+                << "outer iterations not settled (history columns "
+                << "'unsettled', 'coulomb_excess')." << std::endl;
   }
 
   template <int dim>
@@ -296,7 +306,7 @@ namespace softgrasp
     typename NewtonSolver<dim>::Result result;
     unsigned int                       newton_total = 0, linear_total = 0;
     unsigned int                       increases = 0, non_descent = 0;
-    std::string                        unsettled;
+    last_unsettled = false;
     for (last_outer_iterations = 1;; ++last_outer_iterations)
     {
       result = newton->solve(run.solid());
@@ -313,6 +323,24 @@ namespace softgrasp
                           << line << std::endl;
       if (settled)
         break;
+      if (last_outer_iterations == max_outer && mortar->accept_unsettled())
+      {
+        // an equilibrium of the lagged problem, Coulomb's law not yet
+        // against the current normal forces: kept, with its excess
+        ++unsettled_steps;
+        last_unsettled = true;
+        run.out() << "Warning: step " << run.state().step + 1
+                  << " (t = " << time
+                  << " s): the contact's outer iterations did not "
+                  << "settle in " << max_outer << " (" << line
+                  << "); the step is accepted with a Coulomb excess of "
+                  << mortar->coulomb_excess()
+                  << " of mu times the largest normal force. Fix: a smaller "
+                     "'Time/Time step', or 'Contact/Unsettled steps = cut "
+                     "back'."
+                  << std::endl;
+        break;
+      }
       if (last_outer_iterations == max_outer)
       {
         result.converged = false;
@@ -382,6 +410,8 @@ namespace softgrasp
                             double(first ? 0 : last_energy_increases));
       trailing.emplace_back("non_descent_directions",
                             double(first ? 0 : last_non_descent));
+      trailing.emplace_back("coulomb_excess", mortar->coulomb_excess());
+      trailing.emplace_back("unsettled", double(!first && last_unsettled));
     }
     run.record(time, leading, trailing);
     if (mortar)

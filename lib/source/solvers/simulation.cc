@@ -211,11 +211,31 @@ namespace softgrasp
       const auto    values      = surface_output->history_values(record.forces);
       for (std::size_t k = 0; k < names.size(); ++k)
         contact_row.emplace_back(names[k], values[k]);
+      contact_row.emplace_back("stick_slip_drop", report_force_drops(record));
       recorder.add_contact_row(std::move(record), contact_row);
     }
     TimerOutput::Scope scope(timers, "output");
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       recorder.write_tables();
+  }
+
+  template <int dim>
+  double Simulation<dim>::report_force_drops(const ContactForceRecord &record)
+  {
+    // a drop of more than 3 % of a drag within one step
+    const auto &records = recorder.contact_forces();
+    if (records.empty())
+      return 0;
+    double largest = 0;
+    for (const auto &drop : lateral_force_drops(records.back(), record, 0.03))
+    {
+      largest = std::max(largest, drop.fraction());
+      pcout << "Stick-slip event at t = " << record.time << " s: the lateral "
+            << "force on " << bodies.geom_label(drop.body, drop.geom)
+            << " fell by " << 100 * drop.fraction() << " % in one step ("
+            << drop.before << " -> " << drop.after << " N)." << std::endl;
+    }
+    return largest;
   }
 
   template <int dim> void Simulation<dim>::write_fields(const double time)

@@ -65,6 +65,34 @@ namespace softgrasp
   };
 
   /**
+   * A sudden drop of a geom's lateral force |(I - n n^T) F| between two
+   * consecutive records: a stick-slip event of a drag (after it a
+   * quasi-static, rate-independent pull has no determinate state;
+   * doc/contact.md).
+   */
+  struct LateralForceDrop
+  {
+    unsigned int body = 0, geom = 0;
+    double       before = 0, after = 0; ///< |lateral force| (N)
+    /// The relative drop, 1 - after / before.
+    double fraction() const
+    {
+      return 1 - after / before;
+    }
+  };
+
+  /**
+   * The geoms whose lateral force fell by more than @p threshold (a
+   * fraction) from @p before to @p after, among those whose lateral force
+   * was at least 5 % of their normal force before (a drag, not round-off
+   * of a pressing geom).
+   */
+  std::vector<LateralForceDrop>
+  lateral_force_drops(const ContactForceRecord &before,
+                      const ContactForceRecord &after,
+                      const double              threshold);
+
+  /**
    * Output of a ContactSurface (implicit or explicit contact): per geom and per
    * body force resultants with the normal/lateral split f_n = (n n^T) F, f_mu =
    * (I - n n^T) F, where n is the geom's reference normal (ReferenceNormal:

@@ -36,6 +36,12 @@ namespace softgrasp
     /// Incremental potential: the most outer iterations of a step before
     /// it is cut back.
     unsigned int max_outer_iterations = 30;
+    /// Incremental potential: the most Newton iterations of one solve (at
+    /// least 'Newton/Maximum iterations').
+    unsigned int max_newton_iterations = 100;
+    /// Incremental potential: keep a step whose outer iterations have not
+    /// settled (true) or cut it back (false).
+    bool accept_unsettled = true;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

@@ -60,6 +60,32 @@ namespace softgrasp
     }
 
     /**
+     * After settle(): how far the friction forces exceed Coulomb's bound
+     * against the current normal forces, max_j (|f_t,j| - mu lambda_j),
+     * relative to mu max_j lambda_j (0: Coulomb holds at every node; a
+     * lagged friction law may exceed it until its lag has settled).
+     */
+    virtual double coulomb_excess() const
+    {
+      return 0;
+    }
+
+    /// Whether a step whose outer iterations have not settled after
+    /// max_outer_iterations() is accepted (with a warning) rather than cut
+    /// back.
+    virtual bool accept_unsettled() const
+    {
+      return false;
+    }
+
+    /// The most Newton iterations of one solve this enforcement asks for
+    /// (0: 'Newton/Maximum iterations' stands).
+    virtual unsigned int max_newton_iterations() const
+    {
+      return 0;
+    }
+
+    /**
      * Implicit dynamics: the lumped mass @p mass (kg per dof; ghosted) and
      * 1/dt^2 of the step (0 restores the quasi-static case), for
      * enforcements that weigh contact against the nodes' inertia.

@@ -45,6 +45,9 @@ namespace softgrasp
     void begin_step() override;
     bool settle(const SolidSystem<dim> &system, std::string &report) override;
     unsigned int max_outer_iterations() const override;
+    unsigned int max_newton_iterations() const override;
+    double       coulomb_excess() const override;
+    bool         accept_unsettled() const override;
     unsigned int changes_in_step() const override;
 
     void evaluate(const SolidSystem<dim> &system) override;
@@ -117,6 +120,7 @@ namespace softgrasp
     /// largest k h (settle()).
     double       force_floor  = 0;
     bool         project      = false;
+    double       excess       = 0; ///< coulomb_excess() of the last settle()
     unsigned int change_count = 0, step_changes = 0;
   };
 } // namespace softgrasp

@@ -95,6 +95,10 @@ namespace softgrasp
     unsigned int                       last_newton_iterations = 0;
     /// Newton solves of the last step (the contact's outer iterations).
     unsigned int last_outer_iterations = 0;
+    /// Whether the last step was accepted with its outer iterations not
+    /// settled, and how many steps of the run were.
+    bool         last_unsettled  = false;
+    unsigned int unsettled_steps = 0;
     /// Of the last step's Newton updates: those that raised the potential
     /// and those whose direction was not of descent (NewtonSolver::Result).
     unsigned int last_energy_increases = 0, last_non_descent = 0;

@@ -92,7 +92,11 @@ namespace softgrasp
                 const HistoryValues &leading,
                 const HistoryValues &trailing);
     void write_fields(const double time);
-    void print_summary(const std::string &integrator) const;
+    /// Log the geoms whose lateral force fell by more than 3 % since the
+    /// last record (stick-slip events); the largest relative drop (0: none)
+    /// for the contact history's column 'stick_slip_drop'.
+    double report_force_drops(const ContactForceRecord &record);
+    void   print_summary(const std::string &integrator) const;
     /// Refuse a body held by nothing, and contact without bodies or
     /// bodies without contact.
     void check_contact_setup() const;
