@@ -118,7 +118,8 @@ namespace softgrasp
       std::ostringstream out;
       out << "# time (s), then per geom: normal, lateral, friction-only and "
              "pressure part of the lateral force ("
-          << unit << ")\n# geoms:";
+          << unit << "), and lateral / normal (1; 0 without a normal force)"
+          << "\n# geoms:";
       for (const auto &label : labels)
         out << ' ' << label;
       out << '\n' << std::setprecision(10);
@@ -129,8 +130,9 @@ namespace softgrasp
           for (const auto &f : body_forces)
           {
             const LateralSplit s = lateral_split(f);
-            out << ' ' << f.normal_force() << ' ' << s.lateral << ' '
-                << s.friction << ' ' << s.pressure;
+            const double       N = f.normal_force();
+            out << ' ' << N << ' ' << s.lateral << ' ' << s.friction << ' '
+                << s.pressure << ' ' << (N > 0 ? s.lateral / N : 0.);
           }
         out << '\n';
       }
@@ -142,18 +144,23 @@ namespace softgrasp
       gp << "set terminal pngcairo size 1000,650 noenhanced\n"
          << "set output '" << AtomicFile::temporary_name(picture) << "'\n"
          << "set title 'Contact forces on the rigid geoms: normal (solid), "
-            "lateral (dashed), friction alone (dotted)'\n"
+            "lateral (dashed), friction alone (dotted); lateral / normal "
+            "(thin, right axis)'\n"
          << "set xlabel 'time t (s)'\nset ylabel 'force (" << unit
-         << ")'\nset key left top\nset grid\nplot ";
+         << ")'\nset y2label 'lateral / normal (1)'\nset ytics nomirror\n"
+         << "set y2tics\nset key left top\nset grid\nplot ";
       for (unsigned int g = 0; g < labels.size(); ++g)
       {
-        const unsigned int c = 2 + 4 * g;
+        const unsigned int c = 2 + 5 * g;
         gp << (g ? ", " : "") << "'" << base << ".dat' using 1:" << c
            << " with lines lw 2 lc " << g + 1 << " title '" << labels[g]
            << ": normal', '' using 1:" << c + 1 << " with lines dt 2 lw 2 lc "
            << g + 1 << " title '" << labels[g]
            << ": lateral', '' using 1:" << c + 2 << " with lines dt 3 lw 2 lc "
-           << g + 1 << " title '" << labels[g] << ": friction alone'";
+           << g + 1 << " title '" << labels[g]
+           << ": friction alone', '' using 1:" << c + 4
+           << " axes x1y2 with lines dt 4 lw 1 lc " << g + 1 << " title '"
+           << labels[g] << ": lateral / normal'";
       }
       gp << '\n';
       AtomicFile::write(directory + "/" + base + ".gnuplot", gp.str());
