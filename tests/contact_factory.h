@@ -164,6 +164,8 @@ namespace softgrasp_tests
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
+#include <cstdlib>
+#include <iostream>
 #include <softgrasp/solvers/simulation.h>
 
 namespace softgrasp_tests
@@ -235,6 +237,31 @@ namespace softgrasp_tests
       s << (k ? "; " : "") << t << ": 0, 0, " << 0.01 - d << ", 1, 0, 0, 0";
     }
     return s.str();
+  }
+
+  /**
+   * The smallest and largest nominal contact pressure n . f / A_0 (Pa; N/m
+   * per metre in 2D) over the contact nodes of @p run, which must all be
+   * closed (a pressed face). Collective.
+   */
+  template <int dim>
+  std::pair<double, double>
+  closed_pressure_range(const softgrasp::Simulation<dim> &run)
+  {
+    double p_min = 1e300, p_max = -1e300;
+    for (const auto &node : run.contact()->nodes())
+    {
+      if (node.status == softgrasp::ContactStatus::inactive)
+      {
+        std::cerr << "a node of the pressed face is open" << std::endl;
+        std::abort();
+      }
+      const double p = node.normal.dot(node.force) / node.reference_area;
+      p_min          = std::min(p_min, p);
+      p_max          = std::max(p_max, p);
+    }
+    return {dealii::Utilities::MPI::min(p_min, MPI_COMM_WORLD),
+            dealii::Utilities::MPI::max(p_max, MPI_COMM_WORLD)};
   }
 
   /// Hertz's values for the problem of hertz_prm() (full sphere).

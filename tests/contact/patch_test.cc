@@ -47,17 +47,7 @@ run(const unsigned int degree, const bool mesh_platen = false)
   auto solver = make_solver<dim>(prm);
   solver->run();
 
-  double p_min = 1e300, p_max = -1e300;
-  for (const auto &node : solver->contact()->nodes())
-  {
-    SG_CHECK(node.status != softgrasp::ContactStatus::inactive,
-             "every node of the pressed face is closed");
-    const double p = node.normal.dot(node.force) / node.reference_area;
-    p_min          = std::min(p_min, p);
-    p_max          = std::max(p_max, p);
-  }
-  p_min = dealii::Utilities::MPI::min(p_min, MPI_COMM_WORLD);
-  p_max = dealii::Utilities::MPI::max(p_max, MPI_COMM_WORLD);
+  const auto [p_min, p_max] = closed_pressure_range(*solver);
 
   const auto   forces = solver->contact_output()->geom_forces(solver->system());
   const double plate  = forces[0][0].force[dim - 1];

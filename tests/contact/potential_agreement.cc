@@ -74,19 +74,9 @@ namespace
                                 " set Directory = output-patch\nend\n" +
                                 enforcement);
     run->run();
-    double p_min = 1e300, p_max = -1e300;
-    for (const auto &node : run->contact()->nodes())
-    {
-      SG_CHECK(node.status != softgrasp::ContactStatus::inactive,
-               "every node of the pressed face is closed");
-      const double p = node.normal.dot(node.force) / node.reference_area;
-      p_min          = std::min(p_min, p);
-      p_max          = std::max(p_max, p);
-    }
-    p_min                = dealii::Utilities::MPI::min(p_min, MPI_COMM_WORLD);
-    p_max                = dealii::Utilities::MPI::max(p_max, MPI_COMM_WORLD);
-    const auto  &history = run->history();
-    const auto   forces  = run->contact_output()->geom_forces(run->system());
+    const auto [p_min, p_max] = closed_pressure_range(*run);
+    const auto  &history      = run->history();
+    const auto   forces = run->contact_output()->geom_forces(run->system());
     const Plate  plate{forces[0][0].force[dim - 1], (p_max - p_min) / p_max};
     const double support = history.value(
         history.rows.size() - 1, dim == 3 ? "reaction_4_z" : "reaction_2_y");
@@ -201,20 +191,5 @@ main(int argc, char **argv)
           0.5,
           0.75);
 
-  drag<3>("tube drag",
-          problem("tube_drag.prm",
-                  "subsection Mesh\n subsection Tube\n"
-                  "  set Fine zone cells = 10\n end\nend\n"
-                  "subsection Contact\n set Friction coefficient = 0\nend\n"
-                  "subsection Rigid bodies\n subsection Body finger\n"
-                  "  set Trajectory = 0: -0.005, 0, 0.0405, 1, 0, 0, 0; "
-                  "0.5: -0.005, 0, 0.0355, 1, 0, 0, 0; "
-                  "1: -0.001, 0, 0.0355, 1, 0, 0, 0\n end\nend\n"
-                  "subsection Time\n set Integrator = quasi-static\n"
-                  " set End time = 1\n set Time step = 0.0625\n"
-                  " set Phases =\nend\n"
-                  "subsection Output\n set Directory = output-tube\n"
-                  " set VTU interval = 0\n set Verbose = false\nend\n"),
-          0.5,
-          1);
+  drag<3>("tube drag", frictionless_tube_pull(10, "output-tube"), 0.5, 1);
 }

@@ -59,6 +59,28 @@ namespace softgrasp_tests
   {
     return problem_text(PROBLEM_DIR "/" + name, overrides);
   }
+
+  /// tube_drag.prm frictionless with @p axial_cells over its fine zone,
+  /// quasi-static: pressed 5 mm until t = 0.5 s, pulled 4 mm until
+  /// t = 1 s in steps of 0.0625 s; output into @p directory.
+  inline std::string frictionless_tube_pull(const unsigned int axial_cells,
+                                            const std::string &directory)
+  {
+    return problem(
+        "tube_drag.prm",
+        "subsection Mesh\n subsection Tube\n  set Fine zone cells = " +
+            std::to_string(axial_cells) +
+            "\n end\nend\n"
+            "subsection Contact\n set Friction coefficient = 0\nend\n"
+            "subsection Rigid bodies\n subsection Body finger\n"
+            "  set Trajectory = 0: -0.005, 0, 0.0405, 1, 0, 0, 0; "
+            "0.5: -0.005, 0, 0.0355, 1, 0, 0, 0; "
+            "1: -0.001, 0, 0.0355, 1, 0, 0, 0\n end\nend\n"
+            "subsection Time\n set Integrator = quasi-static\n"
+            " set End time = 1\n set Time step = 0.0625\n set Phases =\nend\n"
+            "subsection Output\n set Directory = " +
+            directory + "\n set VTU interval = 0\n set Verbose = false\nend\n");
+  }
 #endif
 
   /// The ball generator's octant (R = 20 mm) refined @p refinements times,

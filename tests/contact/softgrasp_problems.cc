@@ -83,20 +83,8 @@ namespace
   /// fine zone, relative to the smallest normal force.
   double frictionless_tube_drag(const unsigned int axial_cells)
   {
-    auto solver = make_solver<3>(problem(
-        "tube_drag.prm",
-        "subsection Mesh\n subsection Tube\n  set Fine zone cells = " +
-            std::to_string(axial_cells) +
-            "\n end\nend\n"
-            "subsection Contact\n set Friction coefficient = 0\nend\n"
-            "subsection Rigid bodies\n subsection Body finger\n"
-            "  set Trajectory = 0: -0.005, 0, 0.0405, 1, 0, 0, 0; "
-            "0.5: -0.005, 0, 0.0355, 1, 0, 0, 0; "
-            "1: -0.001, 0, 0.0355, 1, 0, 0, 0\n end\nend\n"
-            "subsection Time\n set Integrator = quasi-static\n"
-            " set End time = 1\n set Time step = 0.0625\n set Phases =\nend\n"
-            "subsection Output\n set Directory = out-tube\n"
-            " set VTU interval = 0\n set Verbose = false\nend\n"));
+    auto solver =
+        make_solver<3>(frictionless_tube_pull(axial_cells, "out-tube"));
     solver->run();
     const auto &records      = solver->contact_force_history();
     double      largest_drag = 0, n_min = 1e30, n_max = 0;
