@@ -289,6 +289,71 @@ namespace softgrasp
   }
 
   template <int dim>
+  typename NewtonSolver<dim>::Result
+  ImplicitStepper<dim>::solve_outer(const SimulationAccess<dim> &run,
+                                    const double                 time)
+  {
+    // An enforcement that holds something fixed within a Newton solve (the
+    // lagged friction of the incremental potential) repeats the solve until
+    // that has settled: the outer iterations.
+    const unsigned int max_outer = mortar ? mortar->max_outer_iterations() : 1;
+    typename NewtonSolver<dim>::Result result;
+    last_newton_iterations = last_linear_iterations = 0;
+    last_energy_increases = last_non_descent = 0;
+    last_unsettled                           = false;
+    for (last_outer_iterations = 1;; ++last_outer_iterations)
+    {
+      result = newton->solve(run.solid());
+      last_energy_increases += result.energy_increases;
+      last_non_descent += result.non_descent;
+      last_newton_iterations += result.iterations;
+      last_linear_iterations += result.linear_iterations;
+      if (!result.converged || mortar == nullptr)
+        break;
+      std::string line;
+      const bool  settled = mortar->settle(run.solid(), line);
+      if (!line.empty())
+        run.verbose_out() << "    outer " << last_outer_iterations << ": "
+                          << line << std::endl;
+      if (settled)
+        break;
+      if (last_outer_iterations < max_outer)
+        continue;
+      if (mortar->accept_unsettled())
+        accept_unsettled(run, time, line);
+      else
+      {
+        result.converged = false;
+        result.failure   = "the contact's outer iterations did not settle in " +
+                         std::to_string(max_outer) + " (" + line +
+                         "; 'Contact/Maximum outer iterations', 'Contact/"
+                         "Settle tolerance')";
+      }
+      break;
+    }
+    return result;
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::accept_unsettled(const SimulationAccess<dim> &run,
+                                              const double                 time,
+                                              const std::string &settle_line)
+  {
+    // an equilibrium of the lagged problem, Coulomb's law not yet against
+    // the current normal forces: kept, with its excess
+    ++unsettled_steps;
+    last_unsettled = true;
+    run.out() << "Warning: step " << run.state().step + 1 << " (t = " << time
+              << " s): the contact's outer iterations did not settle in "
+              << last_outer_iterations << " (" << settle_line
+              << "); the step is accepted with a Coulomb excess of "
+              << mortar->coulomb_excess()
+              << " of mu times the largest normal force. Fix: a smaller "
+                 "'Time/Time step', or 'Contact/Unsettled steps = cut back'."
+              << std::endl;
+  }
+
+  template <int dim>
   bool ImplicitStepper<dim>::solve_step(const SimulationAccess<dim> &run,
                                         const double                 time,
                                         std::string                 &report)
@@ -299,70 +364,15 @@ namespace softgrasp
       mortar->set_time(time);
       mortar->begin_step();
     }
-    // An enforcement that holds something fixed within a Newton solve (the
-    // lagged friction of the incremental potential) repeats the solve until
-    // that has settled: the outer iterations.
-    const unsigned int max_outer = mortar ? mortar->max_outer_iterations() : 1;
-    typename NewtonSolver<dim>::Result result;
-    unsigned int                       newton_total = 0, linear_total = 0;
-    unsigned int                       increases = 0, non_descent = 0;
-    last_unsettled = false;
-    for (last_outer_iterations = 1;; ++last_outer_iterations)
-    {
-      result = newton->solve(run.solid());
-      increases += result.energy_increases;
-      non_descent += result.non_descent;
-      newton_total += result.iterations;
-      linear_total += result.linear_iterations;
-      if (!result.converged || mortar == nullptr)
-        break;
-      std::string line;
-      const bool  settled = mortar->settle(run.solid(), line);
-      if (!line.empty())
-        run.verbose_out() << "    outer " << last_outer_iterations << ": "
-                          << line << std::endl;
-      if (settled)
-        break;
-      if (last_outer_iterations == max_outer && mortar->accept_unsettled())
-      {
-        // an equilibrium of the lagged problem, Coulomb's law not yet
-        // against the current normal forces: kept, with its excess
-        ++unsettled_steps;
-        last_unsettled = true;
-        run.out() << "Warning: step " << run.state().step + 1
-                  << " (t = " << time
-                  << " s): the contact's outer iterations did not "
-                  << "settle in " << max_outer << " (" << line
-                  << "); the step is accepted with a Coulomb excess of "
-                  << mortar->coulomb_excess()
-                  << " of mu times the largest normal force. Fix: a smaller "
-                     "'Time/Time step', or 'Contact/Unsettled steps = cut "
-                     "back'."
-                  << std::endl;
-        break;
-      }
-      if (last_outer_iterations == max_outer)
-      {
-        result.converged = false;
-        result.failure   = "the contact's outer iterations did not settle in " +
-                         std::to_string(max_outer) + " (" + line +
-                         "; 'Contact/Maximum outer iterations', 'Contact/"
-                         "Settle tolerance')";
-        break;
-      }
-    }
-    last_newton_iterations = newton_total;
-    last_linear_iterations = linear_total;
-    last_energy_increases  = increases;
-    last_non_descent       = non_descent;
-    last_residual = result.residuals.empty() ? 0 : result.residuals.back();
+    const auto result = solve_outer(run, time);
+    last_residual     = result.residuals.empty() ? 0 : result.residuals.back();
     if (result.converged)
       return true;
     std::ostringstream message;
     message << "Step " << run.state().step + 1 << " (t = " << time
             << " s, from t = " << run.state().time
             << " s) failed in outer iteration " << last_outer_iterations
-            << " after " << newton_total
+            << " after " << last_newton_iterations
             << " Newton iterations: " << result.failure
             << ". Residual history (N):";
     for (const double r : result.residuals)

@@ -67,6 +67,16 @@ namespace softgrasp
     /// Fields and checkpoint at their intervals, the progress line;
     /// returns true if the run ends here (stop criterion).
     bool finish_step(const SimulationAccess<dim> &run, const double dt);
+    /// The Newton solves of the step at @p time, repeated while the
+    /// contact's outer iterations have not settled; sets the last_*
+    /// counters.
+    typename NewtonSolver<dim>::Result
+    solve_outer(const SimulationAccess<dim> &run, const double time);
+    /// Keep a step whose outer iterations did not settle, with a warning
+    /// (@p settle_line: the contact's last report).
+    void accept_unsettled(const SimulationAccess<dim> &run,
+                          const double                 time,
+                          const std::string           &settle_line);
     bool solve_step(const SimulationAccess<dim> &run,
                     const double                 time,
                     std::string                 &failure_report);
