@@ -26,7 +26,7 @@ namespace softgrasp
         drop.before = f0.lateral_part.norm();
         drop.after  = after.forces[b][g].lateral_part.norm();
         if (drop.before > 0.05 * std::abs(f0.normal_force()) &&
-            drop.before > 0 && drop.fraction() > threshold)
+            drop.fraction() > threshold)
           drops.push_back(drop);
       }
     return drops;

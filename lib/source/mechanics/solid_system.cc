@@ -358,11 +358,15 @@ namespace softgrasp
     if (recording)
       dilatation_state.set_recorded(true);
     apply_nodal_conditions(with_matrix);
-    result.energy = Utilities::MPI::sum(result.energy, communicator());
-    result.strain_energy =
-        Utilities::MPI::sum(result.strain_energy, communicator());
-    result.load_potential =
-        Utilities::MPI::sum(result.load_potential, communicator());
+    // the energy and its parts in one reduction
+    const double parts[3] = {
+        result.energy, result.strain_energy, result.load_potential};
+    double sums[3];
+    Utilities::MPI::sum(
+        make_array_view(parts), communicator(), make_array_view(sums));
+    result.energy         = sums[0];
+    result.strain_energy  = sums[1];
+    result.load_potential = sums[2];
     if (nodal_conditions != nullptr)
       result.energy += nodal_conditions->energy();
     result.residual_norm = residual.l2_norm();
