@@ -14,10 +14,17 @@
 //    force on the cylinder.
 //  - The drag/normal ratio at every millimetre up to the first stick-slip
 //    event (a drop of the drag by more than 3 % in one step, which every
-//    run reports in its contact history, 'stick_slip_drop', near 11 mm):
+//    run reports in its contact history, 'stick_slip_drop', near 13 mm):
 //    implicit dynamics within 3 % of quasi-statics at the same increment;
 //    quasi-statics at 1 mm within 0.02 of 0.5 mm (the pull's path depends
-//    on the increment: up to 4 % of the ratio, measured).
+//    on the increment: up to 4 % of the ratio, measured). Implicit
+//    dynamics at 1 mm within 4 % (+ 0.003) of 0.5 mm over the pull,
+//    through the event, up to 19 mm (measured: 1.7 % beyond the event,
+//    3.6 % at 8 mm where it follows the quasi-static 1 mm path, 6 % at
+//    20 mm).
+//  Each step starts from the last converged state extrapolated in time
+//  ('Newton/Predictor', the default): without it the first event comes
+//  at 11 mm and the dynamic runs at 0.5 and 1 mm differ by 17 % at 18 mm.
 #include "../contact_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
@@ -137,29 +144,39 @@ main(int argc, char **argv)
     std::string name;
     Drag        drag;
     double      rtol, atol;
+    /// compared with this run (default: the quasi-static reference) up to
+    /// this pull (mm; default: the first event)
+    const Drag *against = nullptr;
+    double      until   = 0;
   };
+  const Drag dynamic              = pull(potential, "implicit dynamic", 0.025);
   const std::vector<Variant> runs = {
-      {"implicit dynamic, 0.5 mm",
-       pull(potential, "implicit dynamic", 0.025),
-       0.03,
-       0},
-      {"quasi-static, 1 mm", pull(potential, "quasi-static", 0.05), 0, 0.02}};
+      {"implicit dynamic, 0.5 mm", dynamic, 0.03, 0},
+      {"quasi-static, 1 mm", pull(potential, "quasi-static", 0.05), 0, 0.02},
+      {"implicit dynamic, 1 mm",
+       pull(potential, "implicit dynamic", 0.05),
+       0.04,
+       0.003,
+       &dynamic,
+       19}};
   dealii::deallog << "potential, quasi-static, 0.5 mm: to the end "
                   << (reference.pulled > 20 - 1e-6)
-                  << ", first stick-slip event near 11 mm "
-                  << (std::abs(reference.first_event - 11) <= 1.5) << std::endl;
+                  << ", first stick-slip event near 13 mm "
+                  << (std::abs(reference.first_event - 13) <= 1) << std::endl;
   std::cout << "potential, quasi-static, 0.5 mm: first event at "
             << reference.first_event << " mm, " << reference.events
             << " events, " << reference.unsettled << " unsettled steps"
             << std::endl;
   SG_CHECK(reference.pulled > 20 - 1e-6, "the potential runs to the end");
   SG_CHECK(reference.events > 0, "a stick-slip event is reported");
-  for (const auto &[name, drag, rtol, atol] : runs)
+  for (const auto &[name, drag, rtol, atol, against, to] : runs)
   {
-    const double until = std::min(reference.first_event, drag.first_event);
-    double       worst = 0;
-    bool         agree = true;
-    for (const auto &[mm, ratio] : reference.ratio)
+    const Drag  &base = against ? *against : reference;
+    const double until =
+        to > 0 ? to + 1 : std::min(base.first_event, drag.first_event);
+    double worst = 0;
+    bool   agree = true;
+    for (const auto &[mm, ratio] : base.ratio)
       if (mm < until - 0.5 && drag.ratio.count(mm))
       {
         worst = std::max(worst, std::abs(drag.ratio.at(mm) - ratio));
@@ -168,7 +185,8 @@ main(int argc, char **argv)
     dealii::deallog << "potential, " << name << ": to the end "
                     << (drag.pulled > 20 - 1e-6) << ", a stick-slip event "
                     << (drag.events > 0) << ", drag/normal within "
-                    << (rtol > 0 ? "3 %" : "0.02") << " before it " << agree
+                    << rtol * 100 << " % + " << atol
+                    << (to > 0 ? " up to 19 mm " : " before it ") << agree
                     << std::endl;
     std::cout << name << ": first event at " << drag.first_event << " mm, "
               << drag.unsettled << " unsettled steps, largest ratio "

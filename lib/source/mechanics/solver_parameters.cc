@@ -304,6 +304,19 @@ namespace softgrasp
         "tolerance needs) instead of 'Linear solver/Relative tolerance' "
         "alone. 'false' solves every step to 'Linear solver/Relative "
         "tolerance'. No effect on the direct solver.");
+    prm.declare_entry(
+        "Predictor",
+        "extrapolated",
+        Patterns::Selection("extrapolated|last converged"),
+        "Where the Newton solve of an implicit step starts when the step "
+        "is the minimisation of a potential ('Contact/Enforcement = "
+        "incremental potential'). 'extrapolated': the last converged state "
+        "moved on linearly in time, u_n + dt (u_n - u_{n-1}) / dt_{n-1} "
+        "(with implicit dynamics u_n + dt v_n), kept only where its "
+        "potential is lower than that of u_n; on a drag it carries the "
+        "sticking nodes along with the rigid body instead of leaving the "
+        "line search to walk them there. 'last converged': start from u_n. "
+        "Other enforcements always start from u_n.");
     prm.leave_subsection();
   }
 
@@ -317,6 +330,7 @@ namespace softgrasp
     line_search           = prm.get_bool("Line search");
     max_line_search_steps = prm.get_integer("Maximum line search steps");
     inexact_linear_solves = prm.get_bool("Inexact linear solves");
+    extrapolate           = prm.get("Predictor") == "extrapolated";
     prm.leave_subsection();
   }
 

@@ -108,7 +108,9 @@ namespace softgrasp
       dt                          = std::min(dt, phase.step);
       const double t_new = take_step(run, phase, u_converged, dt, cut_backs);
       update_velocity(run, u_converged, t_new - state.time);
-      state.time = t_new;
+      previous_solution = u_converged;
+      previous_step     = t_new - state.time;
+      state.time        = t_new;
       ++state.step;
       record_step(run, t_new, cut_backs);
       const bool      stop = finish_step(run, dt);
@@ -364,6 +366,7 @@ namespace softgrasp
       mortar->set_time(time);
       mortar->begin_step();
     }
+    predict(run, time);
     const auto result = solve_outer(run, time);
     last_residual     = result.residuals.empty() ? 0 : result.residuals.back();
     if (result.converged)
@@ -379,6 +382,41 @@ namespace softgrasp
       message << " " << std::scientific << std::setprecision(3) << r;
     report = message.str();
     return false;
+  }
+
+  template <int dim>
+  void ImplicitStepper<dim>::predict(const SimulationAccess<dim> &run,
+                                     const double                 time)
+  {
+    // A minimisation may start anywhere its potential is finite: moved on
+    // linearly in time, a drag's sticking nodes travel with the rigid
+    // body from the start instead of being walked there by the line
+    // search in steps of the slip length. Kept only if it lowers the
+    // potential (not across a reversal of the load, say).
+    const double step = time - run.state().time;
+    if (!run.parameters().newton.extrapolate || mortar == nullptr ||
+        !mortar->is_potential() || !(previous_step > 0) || !(step > 0))
+      return;
+    auto      &solid = run.solid();
+    const auto start = solid.assemble(false);
+    if (!start.ok || !std::isfinite(start.energy))
+      return;
+    const Vector u_start = solid.solution();
+    Vector       change(u_start);
+    change -= previous_solution;
+    solid.solution().add(step / previous_step, change);
+    solid.update_ghosts();
+    const auto moved = solid.assemble(false);
+    const bool lower =
+        moved.ok && std::isfinite(moved.energy) && moved.energy < start.energy;
+    run.verbose_out() << "    predictor: potential " << start.energy << " -> "
+                      << moved.energy
+                      << (lower ? " (kept)" : " (not lower: discarded)")
+                      << std::endl;
+    if (lower)
+      return;
+    solid.solution() = u_start;
+    solid.update_ghosts();
   }
 
   template <int dim>

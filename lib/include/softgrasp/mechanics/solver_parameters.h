@@ -120,6 +120,9 @@ namespace softgrasp
     unsigned int max_line_search_steps = 6; ///< step halvings
     /// iterative linear solves only as tight as Newton's progress needs
     bool inexact_linear_solves = true;
+    /// a minimisation starts from the last converged state extrapolated
+    /// in time (where that lowers its potential)
+    bool extrapolate = true;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

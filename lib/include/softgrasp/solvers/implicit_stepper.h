@@ -80,6 +80,10 @@ namespace softgrasp
     bool solve_step(const SimulationAccess<dim> &run,
                     const double                 time,
                     std::string                 &failure_report);
+    /// Start the minimisation of the step at @p time from the last
+    /// converged state extrapolated in time, where that lowers the
+    /// step's potential ('Newton/Predictor').
+    void predict(const SimulationAccess<dim> &run, const double time);
     /// Set the inertia term of a step of size @p dt from the state
     /// u_n = @p u_start with the velocity v_n.
     void set_inertia(const SimulationAccess<dim> &run,
@@ -115,6 +119,10 @@ namespace softgrasp
     unsigned int last_linear_iterations = 0;
     double       last_residual          = 0;
     double       previous_time          = 0;
+    /// The converged state before the last step, u_{n-1} (m, owned), and
+    /// that step's size (s; 0 before the first step of a run)
+    Vector previous_solution;
+    double previous_step = 0;
     /// Implicit dynamics: v_n (m/s, owned), the predictor u_n + dt v_n
     /// (ghosted) and the lumped mass (kg, owned and ghosted).
     Vector velocity, predictor, mass, ghosted_mass;
