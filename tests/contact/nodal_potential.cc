@@ -89,6 +89,56 @@ namespace
             (p.hessian - hess_fd).norm() / h_scale};
   }
 
+  /// Friction against the current normal force (the polish of a step
+  /// whose lag does not settle; no longer a potential): the Jacobian
+  /// against central differences of the force, sticking and slipping on
+  /// the plane and slipping on the sphere (at @p x, frame of @p base), and
+  /// |f_t| <= mu lambda exactly.
+  void check_polish(const Surface             &sphere,
+                    const Vector3d            &x,
+                    const NodalPotentialInput &base)
+  {
+    NodalPotentialInput in   = base;
+    in.current_normal_force  = true;
+    in.lagged_normal_force   = 0; // not used
+    NodalPotentialInput flat = in;
+    flat.T                   = tangent_basis(Vector3d::UnitZ(), 3);
+    const Vector3d origin(0.001, 0.0005, 0);
+    struct Case
+    {
+      std::string                name;
+      Surface                    surface;
+      Vector3d                   x, x_old;
+      const NodalPotentialInput *input;
+    };
+    const std::vector<Case> cases = {
+        {"stick on the plane",
+         Surface(),
+         origin + Vector3d(3e-6, 1.2e-6, -1e-6),
+         origin,
+         &flat},
+        {"slip on the plane",
+         Surface(),
+         origin + Vector3d(2e-4, 8e-5, -2e-6),
+         origin,
+         &flat},
+        {"slip on the sphere", sphere, x, x - Vector3d(2e-4, 0, 0), &in}};
+    for (const auto &c : cases)
+    {
+      const auto errors = fd_errors(c.surface, c.x, c.x_old, *c.input, 3);
+      const auto p =
+          evaluate_nodal_potential(input_at(c.surface, c.x, c.x_old, *c.input));
+      const double ratio = p.friction.norm() / (in.mu * p.normal_force);
+      dealii::deallog << "3D, friction against the current normal force, "
+                      << c.name << ": |friction| / (mu lambda) " << ratio
+                      << ", Jacobian vs FD "
+                      << (errors.second < 1e-5 ? "ok" : "WRONG") << std::endl;
+      SG_CHECK(errors.second < 1e-5, c.name + ": the Jacobian of the force");
+      SG_CHECK(p.normal_force > 0 && ratio <= 1 + 1e-12,
+               c.name + ": Coulomb against the current normal force");
+    }
+  }
+
   void check_states(const unsigned int dim)
   {
     NodalPotentialInput base;
@@ -196,6 +246,7 @@ namespace
                       << (errors.second < 1e-5 ? "ok" : "WRONG") << std::endl;
       SG_CHECK(errors.first < 1e-5, "sphere: the force is -grad E");
       SG_CHECK(errors.second < 1e-5, "sphere: the Hessian is d(-force)/dx");
+      check_polish(sphere, x, in);
     }
   }
 

@@ -109,6 +109,20 @@ namespace softgrasp
         "Coulomb excess in the history ('coulomb_excess', 'unsettled'); "
         "'cut back': retry with a smaller step, and stop the run when the "
         "cut-backs are used up.");
+    prm.declare_entry(
+        "Polish after",
+        "10",
+        Patterns::Integer(0, 1000),
+        "Incremental potential with friction: after this many outer "
+        "iterations without settling (and again after as many more) the "
+        "step is finished another way, the polish: Newton's method with "
+        "friction against the current normal forces (Coulomb's law "
+        "exactly; the tangent is not symmetric, so the direct solver or "
+        "GMRES; the line search backtracks on the residual), the "
+        "multipliers updated between solves until they settle (at most "
+        "'Maximum outer iterations' solves). If it fails, the lagged "
+        "iterations go on from where they were. The log and the history "
+        "('polished') show where it was used. 0: never. Unit: 1.");
     prm.leave_subsection();
   }
 
@@ -140,6 +154,7 @@ namespace softgrasp
     max_outer_iterations  = prm.get_integer("Maximum outer iterations");
     max_newton_iterations = prm.get_integer("Maximum Newton iterations");
     accept_unsettled      = prm.get("Unsettled steps") == "accept";
+    polish_after          = prm.get_integer("Polish after");
     prm.leave_subsection();
   }
 } // namespace softgrasp

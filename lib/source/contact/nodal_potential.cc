@@ -16,7 +16,10 @@ namespace softgrasp
     if (t > 0)
       out.hessian += k * in.n * in.n.transpose() - out.normal_force * in.H;
 
-    const double bound = in.mu * in.lagged_normal_force; // mu lambda^k (N)
+    // mu lambda^k (N), or mu lambda(x) against the current normal force
+    const double bound =
+        in.mu *
+        (in.current_normal_force ? out.normal_force : in.lagged_normal_force);
     if (bound > 0)
     {
       const Eigen::Vector2d s   = in.T.transpose() * in.w;
@@ -40,6 +43,10 @@ namespace softgrasp
       out.hessian += bound * in.T * K * in.T.transpose();
       out.status = r < eps ? ContactStatus::stick : ContactStatus::slip;
       out.force += out.friction;
+      // d(-f_t)/dx through lambda(x) = lam - k g(x): (f_t / lambda) k n^T
+      if (in.current_normal_force)
+        out.hessian +=
+            (in.penalty / out.normal_force) * out.friction * in.n.transpose();
     }
     else if (out.normal_force > 0)
       out.status = in.mu > 0 ? ContactStatus::stick : ContactStatus::slip;

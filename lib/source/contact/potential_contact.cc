@@ -72,13 +72,14 @@ namespace softgrasp
   {
     const NodeData     &d = data[j];
     NodalPotentialInput in;
-    in.gap                 = p.body >= 0 ? p.gap : 1e300;
-    in.n                   = p.body >= 0 ? p.normal : Eigen::Vector3d::UnitZ();
-    in.multiplier          = d.lag.multiplier;
-    in.penalty             = d.penalty;
-    in.mu                  = parameters.friction_coefficient;
-    in.lagged_normal_force = d.lag.normal_force;
-    in.slip_tolerance      = parameters.slip_tolerance;
+    in.gap                  = p.body >= 0 ? p.gap : 1e300;
+    in.n                    = p.body >= 0 ? p.normal : Eigen::Vector3d::UnitZ();
+    in.multiplier           = d.lag.multiplier;
+    in.penalty              = d.penalty;
+    in.mu                   = parameters.friction_coefficient;
+    in.lagged_normal_force  = d.lag.normal_force;
+    in.slip_tolerance       = parameters.slip_tolerance;
+    in.current_normal_force = polishing;
     if (p.body >= 0 && in.multiplier - in.penalty * in.gap > 0)
       in.H = this->normal_gradient(p, x, fd_step);
     if (d.lag.body >= 0 && d.lag.normal_force > 0)
@@ -292,12 +293,42 @@ namespace softgrasp
 
   template <int dim> bool PotentialContact<dim>::symmetric() const
   {
-    return true;
+    return !polishing;
   }
 
   template <int dim> bool PotentialContact<dim>::is_potential() const
   {
+    return !polishing;
+  }
+
+  template <int dim> bool PotentialContact<dim>::backtrack_on_residual() const
+  {
+    return polishing;
+  }
+
+  template <int dim> bool PotentialContact<dim>::begin_polish()
+  {
+    if (parameters.friction_coefficient == 0)
+      return false; // nothing is lagged but the multipliers
+    lag_before_polish.resize(data.size());
+    for (unsigned int j = 0; j < data.size(); ++j)
+      lag_before_polish[j] = data[j].lag;
+    polishing = true;
     return true;
+  }
+
+  template <int dim> void PotentialContact<dim>::end_polish(const bool keep)
+  {
+    polishing = false;
+    if (keep)
+      return;
+    for (unsigned int j = 0; j < data.size(); ++j)
+      data[j].lag = lag_before_polish[j];
+  }
+
+  template <int dim> unsigned int PotentialContact<dim>::polish_after() const
+  {
+    return parameters.polish_after;
   }
 
   template <int dim>

@@ -94,15 +94,29 @@ namespace softgrasp
     system.begin_update();
     const double s0    = system.residual_dot(du);
     const bool   jump  = violation > 1e-12 * u_scale;
+    const double r0    = state.residual_norm;
     double       alpha = 1.0;
+    // conditions that are neither a potential nor semi-smooth (friction
+    // against the current normal force) backtrack until |r| falls (Armijo
+    // on |r|), by halvings down to 2^-20
+    const bool backtrack = system.backtrack_on_residual() && !jump;
     for (unsigned int ls = 0;; ++ls)
     {
       system.apply_update(du, alpha);
       violation = system.update_constraints();
       state     = system.assemble(false);
+      const unsigned int max_steps =
+          backtrack ? 20 : parameters.max_line_search_steps;
       if (!state.ok)
       {
-        if (ls >= parameters.max_line_search_steps)
+        if (ls >= max_steps)
+          break;
+        alpha *= 0.5;
+        continue;
+      }
+      if (backtrack)
+      {
+        if (state.residual_norm <= (1 - 1e-4 * alpha) * r0 || ls >= max_steps)
           break;
         alpha *= 0.5;
         continue;

@@ -649,6 +649,12 @@ namespace softgrasp
            (nodal_conditions == nullptr || nodal_conditions->is_potential());
   }
 
+  template <int dim> bool SolidSystem<dim>::backtrack_on_residual() const
+  {
+    return nodal_conditions != nullptr &&
+           nodal_conditions->backtrack_on_residual();
+  }
+
   template <int dim>
   std::string SolidSystem<dim>::nodal_conditions_report() const
   {

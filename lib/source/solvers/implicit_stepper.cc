@@ -127,6 +127,11 @@ namespace softgrasp
         break;
       }
     }
+    if (polished_steps + failed_polishes > 0)
+      run.out() << polished_steps << " step(s) finished by the polish "
+                << "(friction against the current normal forces; history "
+                << "column 'polished'), " << failed_polishes
+                << " polish attempt(s) failed." << std::endl;
     if (unsettled_steps > 0)
       run.out() << unsettled_steps << " step(s) accepted with the contact's "
                 << "outer iterations not settled (history columns "
@@ -302,7 +307,7 @@ namespace softgrasp
     typename NewtonSolver<dim>::Result result;
     last_newton_iterations = last_linear_iterations = 0;
     last_energy_increases = last_non_descent = 0;
-    last_unsettled                           = false;
+    last_unsettled = last_polished = false;
     for (last_outer_iterations = 1;; ++last_outer_iterations)
     {
       result = newton->solve(run.solid());
@@ -319,6 +324,10 @@ namespace softgrasp
                           << line << std::endl;
       if (settled)
         break;
+      const unsigned int every = mortar->polish_after();
+      if (every > 0 && last_outer_iterations % every == 0 &&
+          polish(run, result))
+        break;
       if (last_outer_iterations < max_outer)
         continue;
       if (mortar->accept_unsettled())
@@ -334,6 +343,53 @@ namespace softgrasp
       break;
     }
     return result;
+  }
+
+  template <int dim>
+  bool ImplicitStepper<dim>::polish(const SimulationAccess<dim>        &run,
+                                    typename NewtonSolver<dim>::Result &result)
+  {
+    // Where the lagged normal forces 2-cycle or contract slowly (a patch
+    // passing from stick to slip), Newton's method with friction against
+    // the current normal forces holds Coulomb's law exactly; the
+    // multipliers are still updated between its solves. From the last
+    // lagged iterate; on failure the lagged iterations go on from there.
+    if (!mortar->begin_polish())
+      return false;
+    const Vector u_lagged = run.solid().solution();
+    std::string  line;
+    bool         settled = false;
+    unsigned int solves  = 0;
+    while (!settled && solves < mortar->max_outer_iterations())
+    {
+      const auto attempt = newton->solve(run.solid());
+      ++solves;
+      last_newton_iterations += attempt.iterations;
+      last_linear_iterations += attempt.linear_iterations;
+      if (!attempt.converged)
+      {
+        line = attempt.failure;
+        break;
+      }
+      settled = mortar->settle(run.solid(), line);
+      if (settled)
+        result = attempt;
+    }
+    mortar->end_polish(settled);
+    run.verbose_out() << "    polish after outer iteration "
+                      << last_outer_iterations << ": "
+                      << (settled ? "settled" : "failed") << " in " << solves
+                      << " solve(s) (" << line << ")" << std::endl;
+    if (settled)
+    {
+      last_polished = true;
+      ++polished_steps;
+      return true;
+    }
+    ++failed_polishes;
+    run.solid().solution() = u_lagged;
+    run.solid().update_ghosts();
+    return false;
   }
 
   template <int dim>
@@ -460,6 +516,7 @@ namespace softgrasp
                             double(first ? 0 : last_non_descent));
       trailing.emplace_back("coulomb_excess", mortar->coulomb_excess());
       trailing.emplace_back("unsettled", double(!first && last_unsettled));
+      trailing.emplace_back("polished", double(!first && last_polished));
     }
     run.record(time, leading, trailing);
     if (mortar)

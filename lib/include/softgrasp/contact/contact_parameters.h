@@ -42,6 +42,10 @@ namespace softgrasp
     /// Incremental potential: keep a step whose outer iterations have not
     /// settled (true) or cut it back (false).
     bool accept_unsettled = true;
+    /// Incremental potential: after this many unsettled outer iterations
+    /// (and again after as many more) the step is polished: Newton with
+    /// friction against the current normal forces; 0: never.
+    unsigned int polish_after = 10;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

@@ -78,6 +78,32 @@ namespace softgrasp
       return false;
     }
 
+    /**
+     * Finish a step whose lag does not settle another way (the polish):
+     * from the next solve on, friction acts against the current normal
+     * forces (Coulomb's law exactly; the tangent is then not symmetric and
+     * not a Hessian), settle() still updating the multipliers. Returns
+     * false if the enforcement has no such mode. Saves the lag.
+     */
+    virtual bool begin_polish()
+    {
+      return false;
+    }
+
+    /// Leave the polish: keep its lag (@p keep, it settled) or restore the
+    /// one saved by begin_polish().
+    virtual void end_polish(const bool keep)
+    {
+      (void)keep;
+    }
+
+    /// After how many unsettled outer iterations the polish is tried (and
+    /// again after as many more); 0: never.
+    virtual unsigned int polish_after() const
+    {
+      return 0;
+    }
+
     /// The most Newton iterations of one solve this enforcement asks for
     /// (0: 'Newton/Maximum iterations' stands).
     virtual unsigned int max_newton_iterations() const

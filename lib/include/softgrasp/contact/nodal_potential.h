@@ -29,6 +29,11 @@ namespace softgrasp
     /// the step (m); depends on the node's position x with dw/dx = I.
     Eigen::Vector3d w              = Eigen::Vector3d::Zero();
     double          slip_tolerance = 1e-5; ///< eps of phi_eps (m)
+    /// Friction against the node's current normal force lambda(x) instead
+    /// of lagged_normal_force (the polish of a step whose lag does not
+    /// settle): Coulomb's law exactly, no longer a potential, and the
+    /// Hessian gains the non-symmetric k f_t n^T / lambda.
+    bool current_normal_force = false;
   };
 
   /// The node's potential, its force and its Hessian at one position.
@@ -43,7 +48,8 @@ namespace softgrasp
     /// The Hessian d(-force)/dx (N/m): k n n^T - lambda H while the node
     /// presses (exact; the term -lambda H of a convex body's curvature is
     /// negative semi-definite, the rest positive semi-definite) plus the
-    /// friction potential's (positive semi-definite; T is fixed).
+    /// friction potential's (positive semi-definite; T is fixed); with
+    /// current_normal_force the Jacobian of the force, not symmetric.
     Eigen::Matrix3d hessian      = Eigen::Matrix3d::Zero();
     double          normal_force = 0; ///< lambda = max(0, lam - k g) (N)
     /// The friction part of force (N), opposing the slip, at most

@@ -60,14 +60,18 @@ namespace softgrasp
     void add_constraints(
         dealii::AffineConstraints<double> &constraints) const override;
     void
-           add_node_terms(const dealii::AffineConstraints<double> &constraints,
-                          dealii::TrilinosWrappers::SparseMatrix  &tangent,
-                          dealii::TrilinosWrappers::MPI::Vector   &rhs) const override;
-    bool   symmetric() const override;
-    bool   is_potential() const override;
-    void   project_to_positive(const bool on) override;
-    double energy() const override;
-    std::string iteration_report() const override;
+         add_node_terms(const dealii::AffineConstraints<double> &constraints,
+                        dealii::TrilinosWrappers::SparseMatrix  &tangent,
+                        dealii::TrilinosWrappers::MPI::Vector   &rhs) const override;
+    bool symmetric() const override;
+    bool is_potential() const override;
+    bool backtrack_on_residual() const override;
+    bool begin_polish() override;
+    void end_polish(const bool keep) override;
+    unsigned int polish_after() const override;
+    void         project_to_positive(const bool on) override;
+    double       energy() const override;
+    std::string  iteration_report() const override;
     std::string
     describe_node(const dealii::types::global_dof_index dof) const override;
 
@@ -118,10 +122,14 @@ namespace softgrasp
     double                         total_energy = 0;
     /// Normal-force changes below this are round-off (N): 1e-8 of the
     /// largest k h (settle()).
-    double       force_floor  = 0;
-    bool         project      = false;
-    double       excess       = 0; ///< coulomb_excess() of the last settle()
-    unsigned int change_count = 0, step_changes = 0;
+    double force_floor = 0;
+    bool   project     = false;
+    /// In the polish (begin_polish()): friction against the current normal
+    /// forces; the lag it started from.
+    bool             polishing = false;
+    std::vector<Lag> lag_before_polish;
+    double           excess = 0; ///< coulomb_excess() of the last settle()
+    unsigned int     change_count = 0, step_changes = 0;
   };
 } // namespace softgrasp
 

@@ -86,6 +86,17 @@ namespace softgrasp
     }
 
     /**
+     * Whether Newton should backtrack along its direction until the
+     * residual norm falls (Armijo on |r|) rather than take full steps, for
+     * conditions that are neither a potential nor semi-smooth (friction
+     * against the current normal force).
+     */
+    virtual bool backtrack_on_residual() const
+    {
+      return false;
+    }
+
+    /**
      * Potential conditions: from the next tangent on, add the projection
      * of each node's Hessian onto the positive semi-definite matrices
      * (@p on) or the Hessian itself (!@p on). Newton asks for the

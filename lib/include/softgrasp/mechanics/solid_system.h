@@ -154,6 +154,9 @@ namespace softgrasp
     /// assemble() (no follower loads; no nodal conditions, or potential
     /// ones), so that Newton may search its line on that energy.
     bool has_potential() const;
+    /// Whether the nodal conditions ask Newton to backtrack on the
+    /// residual norm (NodalConditions::backtrack_on_residual()).
+    bool backtrack_on_residual() const;
     /// Whether the tangents that follow project the nodal conditions' node
     /// Hessians to positive semi-definite (NodalConditions::
     /// project_to_positive()).

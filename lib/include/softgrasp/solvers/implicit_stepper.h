@@ -72,6 +72,11 @@ namespace softgrasp
     /// counters.
     typename NewtonSolver<dim>::Result
     solve_outer(const SimulationAccess<dim> &run, const double time);
+    /// Finish a step whose lag has not settled by the contact's polish
+    /// (friction against the current normal forces); true if it settled,
+    /// then @p result is its last solve. Else the state is restored.
+    bool polish(const SimulationAccess<dim>        &run,
+                typename NewtonSolver<dim>::Result &result);
     /// Keep a step whose outer iterations did not settle, with a warning
     /// (@p settle_line: the contact's last report).
     void accept_unsettled(const SimulationAccess<dim> &run,
@@ -113,6 +118,10 @@ namespace softgrasp
     /// settled, and how many steps of the run were.
     bool         last_unsettled  = false;
     unsigned int unsettled_steps = 0;
+    /// Whether the last step was finished by the polish, how many steps of
+    /// the run were and how many polish attempts failed.
+    bool         last_polished  = false;
+    unsigned int polished_steps = 0, failed_polishes = 0;
     /// Of the last step's Newton updates: those that raised the potential
     /// and those whose direction was not of descent (NewtonSolver::Result).
     unsigned int last_energy_increases = 0, last_non_descent = 0;
