@@ -95,6 +95,13 @@ namespace softgrasp
           newton_parameters.max_iterations, mortar->max_newton_iterations());
     newton = std::make_unique<NewtonSolver<dim>>(newton_parameters,
                                                  run.verbose_out());
+    // the polish converges fast where it converges (2 to 20 iterations on
+    // the drags); where its backtracking stalls more iterations are lost
+    NewtonParameters polish_parameters = newton_parameters;
+    polish_parameters.max_iterations =
+        std::min(newton_parameters.max_iterations, 30u);
+    polish_newton = std::make_unique<NewtonSolver<dim>>(polish_parameters,
+                                                        run.verbose_out());
     start(run);
     const auto &time  = run.parameters().time;
     RunState   &state = run.state();
@@ -362,7 +369,7 @@ namespace softgrasp
     unsigned int solves  = 0;
     while (!settled && solves < mortar->max_outer_iterations())
     {
-      const auto attempt = newton->solve(run.solid());
+      const auto attempt = polish_newton->solve(run.solid());
       ++solves;
       last_newton_iterations += attempt.iterations;
       last_linear_iterations += attempt.linear_iterations;

@@ -110,6 +110,8 @@ namespace softgrasp
 
     const bool                         dynamic;
     std::unique_ptr<NewtonSolver<dim>> newton;
+    /// The polish's Newton solver: at most 30 iterations per solve.
+    std::unique_ptr<NewtonSolver<dim>> polish_newton;
     ImplicitContact<dim>              *mortar = nullptr; ///< the run's
     unsigned int                       last_newton_iterations = 0;
     /// Newton solves of the last step (the contact's outer iterations).
