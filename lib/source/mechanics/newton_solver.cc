@@ -160,6 +160,9 @@ namespace softgrasp
     const unsigned int max_steps =
         std::max(parameters.max_line_search_steps, 20u);
     double alpha = 1.0;
+    // a bracket of the minimiser along du: the slope s = du . r is
+    // positive (E falling) at lo and negative (E rising) at hi
+    double lo = 0, s_lo = s0, hi = -1, s_hi = 0;
     for (unsigned int ls = 0;; ++ls)
     {
       system.apply_update(du, alpha);
@@ -169,7 +172,7 @@ namespace softgrasp
       {
         if (ls >= max_steps)
           break;
-        alpha *= 0.5;
+        alpha = hi < 0 ? 0.5 * alpha : 0.5 * (lo + alpha);
         continue;
       }
       // with boundary values still being imposed, E is not minimised along
@@ -177,18 +180,43 @@ namespace softgrasp
       // decrease Newton predicts (s0 / 2) is below the round-off of E,
       // which no comparison of energies can resolve
       const double change = state.energy - E0;
-      if (jump || !(s0 > 0) || s0 <= 1e-12 * std::abs(E0) + floor ||
-          change <= -1e-4 * alpha * s0 + noise)
+      const bool   trivial =
+          jump || !(s0 > 0) || s0 <= 1e-12 * std::abs(E0) + floor;
+      const bool   decrease = change <= -1e-4 * alpha * s0 + noise;
+      const double s        = trivial ? 0 : system.residual_dot(du);
+      // Armijo; within a bracket of the minimiser also near it (|s| <=
+      // 0.5 s0): where a sliding node's friction has no curvature along
+      // du, the first step that lowers E may be of the size of a slip
+      // length and lose most of the decrease the line offers
+      const bool near = alpha == 1 || hi < 0 || std::abs(s) <= 0.5 * s0;
+      if (trivial || (decrease && near))
         break;
       if (ls >= max_steps)
       {
-        ++result.energy_increases;
+        if (!decrease)
+          ++result.energy_increases;
         break;
       }
-      // minimiser of the quadratic through E0, the slope -s0 and E(alpha)
-      const double fit =
-          0.5 * alpha * alpha * s0 / std::max(change + alpha * s0, 1e-300);
-      alpha = std::min(0.5 * alpha, std::max(0.1 * alpha, fit));
+      if (s < 0)
+        hi = alpha, s_hi = s;
+      else if (decrease)
+        lo = alpha, s_lo = s;
+      if (hi < 0 || (s >= 0 && !decrease))
+      {
+        // no bracket (or E rose with a falling slope: not convex along
+        // du): the minimiser of the quadratic through E0, the slope -s0
+        // and E(alpha)
+        const double fit =
+            0.5 * alpha * alpha * s0 / std::max(change + alpha * s0, 1e-300);
+        alpha = std::min(0.5 * alpha, std::max(0.1 * alpha, fit));
+        hi    = -1;
+        lo = 0, s_lo = s0;
+        continue;
+      }
+      // the secant root of the slope within the bracket, kept off its ends
+      const double root = lo + (hi - lo) * s_lo / (s_lo - s_hi);
+      alpha             = std::min(hi - 0.05 * (hi - lo),
+                       std::max(lo + 0.05 * (hi - lo), root));
     }
     return alpha;
   }

@@ -262,6 +262,10 @@ namespace softgrasp
           << std::endl;
     if (stepper->needs_tangent())
       pcout << "Linear solver: " << solid->linear_solver_name() << std::endl;
+    if (stepper->needs_tangent() &&
+        !contact_parameters.slave_boundary_ids.empty())
+      pcout << "Contact enforcement: " << contact_parameters.enforcement
+            << std::endl;
     for (const auto id : material_library.material_ids())
       pcout << "Material " << static_cast<unsigned>(id) << ": "
             << material_library.get(id).summary() << std::endl;
