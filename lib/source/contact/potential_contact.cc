@@ -97,6 +97,27 @@ namespace softgrasp
   }
 
   template <int dim>
+  typename PotentialContact<dim>::Proximity
+  PotentialContact<dim>::proximity(const unsigned int     j,
+                                   const Eigen::Vector3d &x)
+  {
+    // The nearest geom; but a node that pressed another geom in the lag
+    // stays with it while the nearest one does not penetrate it by more
+    // than the settle tolerance of the node spacing: a node between two
+    // links would otherwise change geom (and normal, by tens of degrees)
+    // between outer iterations and never settle
+    const Proximity nearest_one = nearest(x);
+    NodeData       &d           = data[j];
+    d.nearest_gap  = nearest_one.body >= 0 ? nearest_one.gap : 1e300;
+    const Lag &lag = d.lag;
+    if (lag.body < 0 || !(lag.normal_force > 0) || nearest_one.body < 0 ||
+        (nearest_one.body == lag.body && nearest_one.geom == lag.geom) ||
+        nearest_one.gap < -parameters.settle_tolerance * d.spacing)
+      return nearest_one;
+    return this->distance_to(lag.body, lag.geom, x);
+  }
+
+  template <int dim>
   void PotentialContact<dim>::evaluate(const SolidSystem<dim> &system)
   {
     TimerOutput::Scope scope(timer, "contact");
@@ -113,7 +134,7 @@ namespace softgrasp
         node.free[c] = !system.constraint_set().is_constrained(node.dofs[c]);
         x[c] += u[node.dofs[c]];
       }
-      const Proximity      p = nearest(x);
+      const Proximity      p = proximity(j, x);
       const NodalPotential potential =
           evaluate_nodal_potential(potential_input(j, x, p));
       const ContactStatus before = node.status;
@@ -159,6 +180,7 @@ namespace softgrasp
         turn = std::max(turn, (node.normal - d.lag.normal).norm());
       if (node.body >= 0)
         penetration = std::max(penetration, -node.gap / d.spacing);
+      penetration = std::max(penetration, -d.nearest_gap / d.spacing);
     }
     largest     = Utilities::MPI::max(largest, comm);
     change      = Utilities::MPI::max(change, comm);

@@ -106,10 +106,18 @@ namespace softgrasp
       double         spacing = 0; ///< h (m)
       Lag            lag, accepted;
       NodalPotential potential;
+      /// The gap to the nearest geom at the last evaluation (m; that of
+      /// the potential may be to the lag's geom, proximity())
+      double nearest_gap = 1e300;
     };
 
     /// The input of node @p j's potential at position @p x, nearest to
     /// geom @p p.
+    /// The geom node @p j at @p x (m) acts with: the nearest, or the
+    /// lag's while the nearest does not penetrate the node beyond the
+    /// settle tolerance. Records the nearest gap.
+    Proximity proximity(const unsigned int j, const Eigen::Vector3d &x);
+
     NodalPotentialInput potential_input(const unsigned int     j,
                                         const Eigen::Vector3d &x,
                                         const Proximity       &p) const;
