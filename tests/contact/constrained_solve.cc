@@ -9,7 +9,9 @@
 //    3 % of Hertz's, and CG needs a bounded number of iterations;
 //  - a block pressed onto a floor and dragged with mu = 0.3 (stick, partial
 //    slip, sliding): normal and lateral force of both solvers agree to 1e-6
-//    at every step, and the tangent is unsymmetric while it slides.
+//    at every step, and the tangent is unsymmetric while it slides (the
+//    multipliers named: the default takes the incremental potential with
+//    friction, which adds no constraints).
 #include "../contact_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
@@ -96,6 +98,8 @@ namespace
       prm << block_on_floor(mu,
                             "0.001 * max(t - 1, 0); 0; -0.00025 * min(t, 1)")
           << "subsection Time\n set End time = 1.5\n set Time step = 0.1\nend\n"
+          << "subsection Contact\n set Enforcement = lagrange multipliers\n"
+          << "end\n"
           << "subsection Newton\n set Relative tolerance = 1e-11\n"
           << " set Inexact linear solves = false\nend\n"
           << "subsection Linear solver\n set Type = " << type

@@ -7,7 +7,9 @@
 // every contact result: the force and moment histories agree to 1e-9. A
 // third run with a 10 times larger complementarity parameter gives the
 // same forces (to 1e-8): c is not a penalty. A fourth run takes the
-// reference normal of the force split from outside (set in code).
+// reference normal of the force split from outside (set in code). The
+// multipliers are named (the default with friction is the incremental
+// potential, which has no complementarity parameter).
 #include "../contact_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
@@ -28,6 +30,8 @@ namespace
         << " subsection Dirichlet boundary 4\n  set Components = x, y, z\n"
         << " end\nend\n"
         << contact("5", 0.2)
+        << "subsection Contact\n set Enforcement = lagrange multipliers\n"
+        << "end\n"
         << "subsection Contact\n set Complementarity parameter = "
         << complementarity << "\nend\n"
         << rigid_body("finger",

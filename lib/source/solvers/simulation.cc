@@ -264,7 +264,14 @@ namespace softgrasp
       pcout << "Linear solver: " << solid->linear_solver_name() << std::endl;
     if (stepper->needs_tangent() &&
         !contact_parameters.slave_boundary_ids.empty())
-      pcout << "Contact enforcement: " << contact_parameters.enforcement
+      pcout << "Contact enforcement: "
+            << contact_parameters.implicit_enforcement()
+            << (contact_parameters.enforcement == "automatic"
+                    ? " ('automatic': friction coefficient " +
+                          std::to_string(
+                              contact_parameters.friction_coefficient) +
+                          ")"
+                    : "")
             << std::endl;
     for (const auto id : material_library.material_ids())
       pcout << "Material " << static_cast<unsigned>(id) << ": "

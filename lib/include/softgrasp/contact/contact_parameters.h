@@ -20,8 +20,13 @@ namespace softgrasp
     /// It steers only the active-set prediction, not the converged answer.
     double complementarity_factor = 0.1; ///< (1)
     /// How the implicit solvers enforce contact: a registered
-    /// ContactEnforcement ("lagrange multipliers", "incremental potential").
-    std::string enforcement = "lagrange multipliers";
+    /// ContactEnforcement ("lagrange multipliers", "incremental potential")
+    /// or "automatic" (implicit_enforcement()).
+    std::string enforcement = "automatic";
+    /// The registered enforcement the implicit solvers use: 'enforcement',
+    /// or for "automatic" the incremental potential with friction and the
+    /// Lagrange multipliers without.
+    std::string implicit_enforcement() const;
     /// Incremental potential: the normal penalty k = factor * 2 mu_0 h of
     /// the augmented Lagrangian, as the complementarity parameter (1).
     double penalty_factor = 100;

@@ -149,8 +149,9 @@ namespace softgrasp
   template <int dim>
   using ContactEnforcementRegistry = PluginRegistry<ContactEnforcement<dim>>;
 
-  /// The enforcement named 'Contact/Enforcement' in @p parameters; an
-  /// unknown name lists the registered ones.
+  /// The enforcement named 'Contact/Enforcement' in @p parameters (for
+  /// "automatic": ContactParameters::implicit_enforcement()); an unknown
+  /// name lists the registered ones.
   template <int dim>
   std::unique_ptr<ImplicitContact<dim>>
   create_implicit_contact(const ContactParameters &parameters,
@@ -158,8 +159,8 @@ namespace softgrasp
                           const double             shear_modulus,
                           dealii::TimerOutput     &timer)
   {
-    return ContactEnforcementRegistry<dim>::create(parameters.enforcement,
-                                                   "contact enforcement")
+    return ContactEnforcementRegistry<dim>::create(
+               parameters.implicit_enforcement(), "contact enforcement")
         ->create(parameters, bodies, shear_modulus, timer);
   }
 } // namespace softgrasp
