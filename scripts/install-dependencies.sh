@@ -22,6 +22,9 @@ packages=(
   libopenblas0-serial
   # testing and plotting
   numdiff libbenchmark-dev gnuplot-nox time
+  # the independent reference code of benchmarks/calculix (not needed to
+  # build or test)
+  calculix-ccx
 )
 
 missing=()
