@@ -12,7 +12,13 @@
 #   benchmarks/calculix_drag.sh OUTDIR [meshes] [pull increments (mm)]
 #                               [more deep_drag_3d_inp.py options]
 # meshes "20,8,6" by default (block cells along x, y, z), increments
-# "0.25". OMP_NUM_THREADS (default 1) sets CalculiX's threads.
+# "0.25". OMP_NUM_THREADS (default 1) sets CalculiX's threads; TAG, if
+# set, ends the run names. The meshes of doc/contact.md's comparison are
+# uniform in x and y with a z zone (softgrasp's Fine zone spanning x, y):
+#   benchmarks/calculix_drag.sh OUT "20,8,3 30,12,4 40,16,6" 0.25 \
+#       --fine-zone -0.04 0 -0.012 0.04 0.03 0
+# (CalculiX 2.20 hangs in its first contact increment on meshes graded in
+# x or y; grading in z works.)
 # Compare with softgrasp: benchmarks/calculix/compare.py.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -29,7 +35,7 @@ mkdir -p "$out"
 cd "$out"
 for mesh in $meshes; do
   for increment in $increments; do
-    name="ccx_${mesh//,/x}_${increment}mm"
+    name="ccx_${mesh//,/x}_${increment}mm${TAG:+_$TAG}"
     IFS=',' read -r nx ny nz <<< "$mesh"
     python3 "$here/calculix/deep_drag_3d_inp.py" "$nx" "$ny" "$nz" "$increment" "$@" > "$name.inp"
     start=$(date +%s.%N)

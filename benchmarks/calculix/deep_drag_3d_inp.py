@@ -19,6 +19,10 @@ nearest point of the axis (a cube-sphere on the rounded end).
 
 Every length is in metres, every stress in pascals.
 
+Measured with CalculiX 2.20: C3D8I elements diverge at 8 mm of press;
+a block graded in x or y (a fine zone inside the block) makes ccx spin
+in its first contact increment, grading in z does not.
+
 Usage: deep_drag_3d_inp.py NX NY NZ PULL_INCREMENT_MM [options] > deck.inp
 """
 import argparse
@@ -39,15 +43,22 @@ def arguments():
                    help='largest pull increment (mm); output every 0.25 mm')
     p.add_argument('--grading', type=float, default=0.8,
                    help='size ratio of neighbouring cells upwards in z')
-    p.add_argument('--fine-x', type=float, nargs=2, default=None,
-                   metavar=('X0', 'X1'),
-                   help='a zone x0..x1 (m) of uniform cells, nx of them; '
-                        'outside it cells grow by --growth')
+    p.add_argument('--fine-zone', type=float, nargs=6, default=None,
+                   metavar=('X0', 'Y0', 'Z0', 'X1', 'Y1', 'Z1'),
+                   help='a box (m) of uniform cells, NX x NY x NZ of them; '
+                        'outside it cells grow by --growth (as softgrasp\'s '
+                        'Mesh/Block/Fine zone)')
     p.add_argument('--growth', type=float, default=1.3)
+    p.add_argument('--slave-x', type=float, default=0.031,
+                   help='top faces with |x| below it (m) are the slave '
+                        'surface (the finger spans |x| < 20 mm)')
+    p.add_argument('--slave-y', type=float, default=0.027,
+                   help='and y below it (m) (the finger spans y < 20 mm)')
     p.add_argument('--rigid-cells', type=int, default=12,
                    help='capsule cells across each box face')
     p.add_argument('--element', default='C3D8',
-                   help='block element type: C3D8 (C3D8I diverges at 8 mm of press)')
+                   help='block element type: C3D8, or C3D20R (quadratic, free of '
+                        'locking; C3D8I diverges at 8 mm of press)')
     p.add_argument('--mu', type=float, default=17241.4)
     p.add_argument('--kappa', type=float, default=166666.7)
     p.add_argument('--friction', type=float, default=0.5)
@@ -68,33 +79,29 @@ def geometric(a, b, n, ratio):
     return x
 
 
+def cells_to_fill(distance, h, g):
+    """Cells of a progression (first size h g, ratio g) that fill distance."""
+    n, total, size = 0, 0.0, h
+    while total < distance * (1 - 1e-9) and n < 1000:
+        size *= g
+        total += size
+        n += 1
+    return max(n, 1)
+
+
 def zoned(a, b, z0, z1, n, growth):
-    """Uniform cells of (z1 - z0)/n in [z0, z1], growing outside it."""
-    h = (z1 - z0) / n
-    mid = [z0 + h * k for k in range(n + 1)]
-
-    def grow(length):
-        cells, size, total = [], h * growth, 0.0
-        while total + size < length - 1e-12:
-            cells.append(size)
-            total += size
-            size *= growth
-        if cells:
-            scale = length / total
-            cells = [c * scale for c in cells]
-        elif length > 1e-12:
-            cells = [length]
-        return cells
-
-    left = [z0]
-    for c in grow(z0 - a):
-        left.append(left[-1] - c)
-    right = list(mid)
-    for c in grow(b - z1):
-        right.append(right[-1] + c)
-    right[-1] = b
-    left[-1] = a
-    return list(reversed(left))[:-1] + right
+    """n uniform cells in [z0, z1], cells growing by growth outside it
+    (softgrasp's Mesh/Block/Fine zone, mesh_generator.cc)."""
+    h, tol = (z1 - z0) / n, 1e-9 * (b - a)
+    x = []
+    if z0 > a + tol:
+        x = list(reversed(geometric(z0, a, cells_to_fill(z0 - a, h, growth),
+                                    growth)))[:-1]
+    x += geometric(z0, z1, n, 1.0)
+    if z1 < b - tol:
+        x += geometric(z1, b, cells_to_fill(b - z1, h, growth), growth)[1:]
+    x[0], x[-1] = a, b
+    return x
 
 
 class Deck:
@@ -114,31 +121,53 @@ class Deck:
 
 
 def block(deck, a):
-    xs = (zoned(-0.04, 0.04, a.fine_x[0], a.fine_x[1], a.nx, a.growth)
-          if a.fine_x else geometric(-0.04, 0.04, a.nx, 1.0))
-    ys = geometric(0.0, 0.03, a.ny, 1.0)
-    zs = geometric(-0.03, 0.0, a.nz, a.grading)
-    ids = {}
-    for k, z in enumerate(zs):
-        for j, y in enumerate(ys):
-            for i, x in enumerate(xs):
-                ids[i, j, k] = deck.node((x, y, z))
+    lower, upper, cells = (-0.04, 0.0, -0.03), (0.04, 0.03, 0.0), (a.nx, a.ny, a.nz)
+    if a.fine_zone:
+        f = a.fine_zone
+        xs, ys, zs = (zoned(lower[d], upper[d], f[d], f[d + 3], cells[d],
+                            a.growth) for d in range(3))
+    else:
+        xs, ys, zs = (geometric(lower[d], upper[d], cells[d], g)
+                      for d, g in enumerate((1.0, 1.0, a.grading)))
+    quadratic = a.element.startswith('C3D20')
+    m = 2 if quadratic else 1   # node index steps per cell
+
+    def at(values, index):
+        """Coordinate of node index (a midpoint for odd ones if quadratic)."""
+        if index % m == 0:
+            return values[index // m]
+        return 0.5 * (values[index // m] + values[index // m + 1])
+
     nx, ny, nz = len(xs) - 1, len(ys) - 1, len(zs) - 1
+    ids = {}
+    for k in range(m * nz + 1):
+        for j in range(m * ny + 1):
+            for i in range(m * nx + 1):
+                if not quadratic or sum(c % 2 for c in (i, j, k)) <= 1:
+                    ids[i, j, k] = deck.node((at(xs, i), at(ys, j), at(zs, k)))
     top = []
-    for k in range(nz):
-        for j in range(ny):
-            for i in range(nx):
-                c = [ids[i, j, k], ids[i + 1, j, k], ids[i + 1, j + 1, k],
-                     ids[i, j + 1, k]]
-                c += [ids[i, j, k + 1], ids[i + 1, j, k + 1],
-                      ids[i + 1, j + 1, k + 1], ids[i, j + 1, k + 1]]
+    for k in range(0, m * nz, m):
+        for j in range(0, m * ny, m):
+            for i in range(0, m * nx, m):
+                corners = [(i, j, k), (i + m, j, k), (i + m, j + m, k),
+                           (i, j + m, k)]
+                corners += [(p, q, r + m) for p, q, r in corners]
+                c = [ids[p] for p in corners]
+                if quadratic:
+                    edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6),
+                             (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
+                    c += [ids[tuple((corners[u][d] + corners[v][d]) // 2
+                                    for d in range(3))] for u, v in edges]
                 e = deck.element('tissue', c)
-                if k == nz - 1:
+                # the slave faces: the top, where the finger can reach
+                centre = [sum(deck.nodes[n - 1][d] for n in c[:8]) / 8
+                          for d in range(3)]
+                if k == m * (nz - 1) and abs(centre[0]) < a.slave_x and \
+                        centre[1] < a.slave_y:
                     top.append(e)
-    deck.nsets['BASE'] = [ids[i, j, 0] for j in range(ny + 1)
-                          for i in range(nx + 1)]
-    deck.nsets['SYMMETRY'] = [ids[i, 0, k] for k in range(nz + 1)
-                              for i in range(nx + 1)]
+    deck.nsets['BASE'] = sorted(n for (i, j, k), n in ids.items() if k == 0)
+    deck.nsets['SYMMETRY'] = sorted(n for (i, j, k), n in ids.items()
+                                    if j == 0)
     deck.faces['TISSUE_FACES'] = [(e, 'S2') for e in top]
     return nx * ny * nz
 
@@ -210,7 +239,10 @@ def write(deck, a):
         out.append('*ELEMENT, TYPE=%s, ELSET=E%s' % (kind, name.upper()))
         for c in deck.elements[name]:
             number += 1
-            out.append('%d, ' % number + ', '.join(str(n) for n in c))
+            text = ', '.join(str(n) for n in c)
+            if len(c) > 15:   # a data line holds at most 16 entries
+                text = text.replace(', %d, ' % c[15], ', %d,\n' % c[15], 1)
+            out.append('%d, ' % number + text)
     for name, ids in deck.nsets.items():
         out.append('*NSET, NSET=%s' % name)
         out += lines(ids)
