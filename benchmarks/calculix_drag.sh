@@ -17,8 +17,7 @@
 # uniform in x and y with a z zone (softgrasp's Fine zone spanning x, y):
 #   benchmarks/calculix_drag.sh OUT "20,8,3 30,12,4 40,16,6" 0.25 \
 #       --fine-zone -0.04 0 -0.012 0.04 0.03 0
-# (CalculiX 2.20 hangs in its first contact increment on meshes graded in
-# x or y; grading in z works.)
+# (a zone inside the block in x and y works as well).
 # Compare with softgrasp: benchmarks/calculix/compare.py.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)

@@ -20,8 +20,9 @@ nearest point of the axis (a cube-sphere on the rounded end).
 Every length is in metres, every stress in pascals.
 
 Measured with CalculiX 2.20: C3D8I elements diverge at 8 mm of press;
-a block graded in x or y (a fine zone inside the block) makes ccx spin
-in its first contact increment, grading in z does not.
+with the capsule's mesh lines on its lowest line (--twist 0) ccx spins
+forever in its first contact increment on some block meshes (a slave
+node on a master edge), so the capsule's mesh is turned by half a cell.
 
 Usage: deep_drag_3d_inp.py NX NY NZ PULL_INCREMENT_MM [options] > deck.inp
 """
@@ -56,9 +57,15 @@ def arguments():
                    help='and y below it (m) (the finger spans y < 20 mm)')
     p.add_argument('--rigid-cells', type=int, default=12,
                    help='capsule cells across each box face')
+    p.add_argument('--twist', type=float, default=0.5,
+                   help='turn the capsule mesh about its axis by this many '
+                        'cells (0.5: no node on its lowest line)')
     p.add_argument('--element', default='C3D8',
                    help='block element type: C3D8, or C3D20R (quadratic, free of '
                         'locking; C3D8I diverges at 8 mm of press)')
+    p.add_argument('--displacements', action='store_true',
+                   help='write the displacements every 0.25 mm to the .frd '
+                        '(for ParaView or a comparison of shapes)')
     p.add_argument('--mu', type=float, default=17241.4)
     p.add_argument('--kappa', type=float, default=166666.7)
     p.add_argument('--friction', type=float, default=0.5)
@@ -172,17 +179,22 @@ def block(deck, a):
     return nx * ny * nz
 
 
-def capsule_point(p, radius):
-    """The point of the capsule of the given radius seen from the axis."""
+def capsule_point(p, radius, twist):
+    """The point of the capsule of the given radius seen from the axis,
+    the direction turned by twist (rad) about the axis."""
     q = (0.0, min(max(p[1], 0.0), L), 0.0)
     d = [p[i] - q[i] for i in range(3)]
+    c, s = math.cos(twist), math.sin(twist)
+    d = [c * d[0] + s * d[2], d[1], -s * d[0] + c * d[2]]
     n = math.sqrt(sum(c * c for c in d))
     return tuple(START[i] + q[i] + radius * d[i] / n for i in range(3))
 
 
-def capsule(deck, n):
+def capsule(deck, n, twist):
     """The rigid layer: a quad grid on five faces of the box around the
-    half capsule, projected onto radii R - LAYER and R."""
+    half capsule, projected onto radii R - LAYER and R, turned by twist
+    (in cells) about the axis."""
+    twist *= math.pi / 2 / n
     across = [R * math.tan(math.pi / 4 * (2 * k / n - 1)) for k in range(n + 1)]
     n_cyl = max(2, round(n * L / (R * math.pi / 2)))
     along = [L * k / n_cyl for k in range(n_cyl)]
@@ -198,8 +210,8 @@ def capsule(deck, n):
     def ids(p):
         key = tuple(round(c * 1e9) for c in p)
         if key not in outer:
-            outer[key] = deck.node(capsule_point(p, R))
-            inner[key] = deck.node(capsule_point(p, R - LAYER))
+            outer[key] = deck.node(capsule_point(p, R, twist))
+            inner[key] = deck.node(capsule_point(p, R - LAYER, twist))
         return key
 
     for grid in faces:
@@ -239,10 +251,11 @@ def write(deck, a):
         out.append('*ELEMENT, TYPE=%s, ELSET=E%s' % (kind, name.upper()))
         for c in deck.elements[name]:
             number += 1
-            text = ', '.join(str(n) for n in c)
-            if len(c) > 15:   # a data line holds at most 16 entries
-                text = text.replace(', %d, ' % c[15], ', %d,\n' % c[15], 1)
-            out.append('%d, ' % number + text)
+            entries = [str(number)] + [str(n) for n in c]
+            # a data line holds at most 16 entries
+            out.append(', '.join(entries[:16]) + (',' if len(entries) > 16 else ''))
+            if len(entries) > 16:
+                out.append(', '.join(entries[16:]))
     for name, ids in deck.nsets.items():
         out.append('*NSET, NSET=%s' % name)
         out += lines(ids)
@@ -277,7 +290,10 @@ def write(deck, a):
                 '*NODE PRINT, NSET=RIGID, TOTALS=ONLY, TIME POINTS=%s' % points,
                 'RF',
                 '*NODE PRINT, NSET=BASE, TOTALS=ONLY, TIME POINTS=%s' % points,
-                'RF', '*END STEP']
+                'RF']
+        if a.displacements:
+            out += ['*NODE FILE, NSET=NALL, TIME POINTS=%s' % points, 'U']
+        out += ['*END STEP']
     print('\n'.join(out))
 
 
@@ -285,7 +301,7 @@ def main():
     a = arguments()
     deck = Deck()
     block(deck, a)
-    capsule(deck, a.rigid_cells)
+    capsule(deck, a.rigid_cells, a.twist)
     write(deck, a)
 
 
