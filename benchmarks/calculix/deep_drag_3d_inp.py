@@ -69,6 +69,10 @@ def arguments():
     p.add_argument('--mu', type=float, default=17241.4)
     p.add_argument('--kappa', type=float, default=166666.7)
     p.add_argument('--friction', type=float, default=0.5)
+    p.add_argument('--contact', choices=('surface', 'node'),
+                   default='surface',
+                   help='surface-to-surface (the default) or node-to-surface '
+                        'contact')
     p.add_argument('--stiffness', type=float, default=1e9,
                    help='contact penalty (Pa/m)')
     p.add_argument('--stick-slope', type=float, default=1e8,
@@ -270,7 +274,8 @@ def write(deck, a):
             '*SURFACE INTERACTION, NAME=SI',
             '*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR',
             '%g' % a.stiffness, '*FRICTION', '%g, %g' % (a.friction, a.stick_slope),
-            '*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE',
+            '*CONTACT PAIR, INTERACTION=SI, TYPE=%s TO SURFACE' % (
+                'NODE' if a.contact == 'node' else 'SURFACE'),
             'TISSUE_FACES, RIGID_FACES',
             '*BOUNDARY', 'BASE, 1, 3', 'SYMMETRY, 2, 2']
     # output every 0.25 mm of travel: 0.1 of the press step's time
