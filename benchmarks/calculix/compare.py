@@ -7,11 +7,15 @@ time runs 0 to 0.5 s for the press and then 20 mm/s). The first is the
 reference. Prints a Markdown table: per pull (mm) the normal force (N),
 the drag (N) and their ratio of each run, and each later run's
 difference from the reference in percent; then the largest differences
-over the pull. Usage:
-  compare.py ccx=ccx_20x8x6_0.25mm.csv softgrasp=drag_contact.csv
+over the pull. With --plot FILE.png also draws the three curves of every
+run over the pull with gnuplot. Usage:
+  compare.py [--plot drag.png] ccx=ccx_20x8x6_0.25mm.csv sg=drag_contact.csv
 """
 import csv
+import os
+import subprocess
 import sys
+import tempfile
 
 
 def curve(path):
@@ -37,9 +41,35 @@ def curve(path):
     return out
 
 
+def plot(runs, png):
+    """Normal force, drag and ratio over the pull, one line per run."""
+    folder = tempfile.mkdtemp()
+    script = ['set terminal pngcairo size 1500,480 font ",10"',
+              'set output "%s"' % png, 'set multiplot layout 1,3',
+              'set xlabel "pull (mm)"', 'set grid', 'set key left top']
+    for k, (name, c) in enumerate(runs):
+        with open(os.path.join(folder, '%d.dat' % k), 'w') as f:
+            for mm in sorted(c):
+                n, d = c[mm]
+                f.write('%g %g %g %g\n' % (mm, n, d, d / n if n else 0))
+    for column, label in ((2, 'normal force (N)'), (3, 'drag (N)'),
+                          (4, 'drag / normal force')):
+        script.append('set ylabel "%s"' % label)
+        script.append('plot ' + ', '.join(
+            '"%s/%d.dat" using 1:%d with lines lw 2 title "%s"' % (
+                folder, k, column, name.replace('_', ' '))
+            for k, (name, _) in enumerate(runs)))
+    subprocess.run(['gnuplot'], input='\n'.join(script), text=True,
+                   check=True)
+
+
 def main():
     runs = []
-    for arg in sys.argv[1:]:
+    args = sys.argv[1:]
+    png = None
+    if len(args) >= 2 and args[0] == '--plot':
+        png, args = args[1], args[2:]
+    for arg in args:
         name, _, path = arg.partition('=')
         if not path:
             sys.exit('compare.py: "%s" is not NAME=FILE. Fix: e.g. '
@@ -76,6 +106,8 @@ def main():
     for name, w in worst.items():
         print('%s against %s, 1 to 20 mm: largest |difference| F_n %.1f %%, '
               'drag %.1f %%, ratio %.1f %%' % (name, runs[0][0], *w))
+    if png:
+        plot(runs, png)
 
 
 if __name__ == '__main__':
