@@ -11,6 +11,7 @@ set(SOFTGRASP_QUICK_TESTS
   # library modules
   materials/tangent_consistency materials/presets
   postprocess/principal_strains postprocess/tissue_injury.mpirun=2
+  postprocess/corner_jacobian
   mechanics/bad_input mechanics/implicit_dynamics
   mechanics/cook_membrane_reference mechanics/potential_derivatives
   meshes/generated_shapes rigid/shapes io/kinematics_file
@@ -31,7 +32,7 @@ set(SOFTGRASP_QUICK_TESTS
 set(SOFTGRASP_LONG_TESTS
   mujoco/grasp_pull_fe mujoco/sweep_recovery
   contact/potential_agreement contact/potential_agreement.mpirun=2
-  contact/drag_potential)
+  contact/drag_potential contact/drag_calculix)
 
 # Label the tests of the current directory: the category (the name up to
 # its '/'), and 'quick' and 'long' from the lists above.

@@ -1,6 +1,7 @@
 #include <deal.II/base/multithread_info.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/postprocess/contact_force_report.h>
+#include <softgrasp/postprocess/corner_jacobian.h>
 #include <softgrasp/solvers/simulation.h>
 
 namespace softgrasp
@@ -87,7 +88,13 @@ namespace softgrasp
     const SimulationAccess<dim> access(*this);
     stepper->check_inputs(access);
     prepare_run();
+    folding = Folding();
     stepper->run(access);
+    if (folding.records > 0)
+      pcout << "Warning: " << folding.records << " recorded step(s) had a "
+            << "folded element (J <= 0 at a cell vertex), the first at t = "
+            << folding.first_time << " s: refine the mesh where it folds."
+            << std::endl;
     timers.print_wall_time_statistics(comm);
   }
 
@@ -188,6 +195,7 @@ namespace softgrasp
         row.emplace_back("u" + std::to_string(p) + "_" + axes[d],
                          displacements[p][d]);
     row.insert(row.end(), trailing.begin(), trailing.end());
+    row.emplace_back("min_corner_J", report_folding(time));
     if (surface_output)
     {
       // the deepest penetration of the tissue into a geom, and where
@@ -236,6 +244,33 @@ namespace softgrasp
             << drop.before << " -> " << drop.after << " N)." << std::endl;
     }
     return largest;
+  }
+
+  template <int dim> double Simulation<dim>::report_folding(const double time)
+  {
+    solid->update_ghosts();
+    const auto corner = smallest_corner_jacobian(solid->mapping(),
+                                                 solid->dof_handler(),
+                                                 solid->ghosted_solution(),
+                                                 comm);
+    if (corner.folded())
+    {
+      if (folding.records == 0)
+        folding.first_time = time;
+      if (!folding.now)
+        pcout << "Warning: folded element at t = " << time
+              << " s: J = det F = " << corner.J
+              << " at a cell vertex at reference position " << corner.position
+              << " m (positive at the quadrature points, so the solver "
+              << "accepts it). Forces from here on can be an artefact of "
+              << "a mesh too coarse for this deformation. Fix: refine the "
+              << "mesh there (e.g. Mesh/Block/Fine zone, or a global "
+              << "refinement); column 'min_corner_J' of the history."
+              << std::endl;
+      ++folding.records;
+    }
+    folding.now = corner.folded();
+    return corner.J;
   }
 
   template <int dim> void Simulation<dim>::write_fields(const double time)

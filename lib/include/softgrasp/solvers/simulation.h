@@ -96,6 +96,10 @@ namespace softgrasp
     /// last record (stick-slip events); the largest relative drop (0: none)
     /// for the contact history's column 'stick_slip_drop'.
     double report_force_drops(const ContactForceRecord &record);
+    /// Warn when a cell first folds (J <= 0 at a vertex, see
+    /// CornerJacobian) and count the records that have one; the smallest
+    /// vertex J for the history's column 'min_corner_J'. Collective.
+    double report_folding(const double time);
     void   print_summary(const std::string &integrator) const;
     /// Refuse a body held by nothing, and contact without bodies or
     /// bodies without contact.
@@ -128,6 +132,13 @@ namespace softgrasp
     std::vector<dealii::TrilinosWrappers::MPI::Vector> restored_fields;
     std::function<bool()>                              stop_criterion;
     bool                                               stopped = false;
+    /// Recorded steps with a folded cell in this run (report_folding()).
+    struct Folding
+    {
+      unsigned int records    = 0;
+      double       first_time = 0;
+      bool         now        = false;
+    } folding;
   };
 
   /// The earlier name of Simulation, kept for one release.
