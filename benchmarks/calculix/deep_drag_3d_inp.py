@@ -66,9 +66,12 @@ def arguments():
     p.add_argument('--displacements', action='store_true',
                    help='write the displacements every 0.25 mm to the .frd '
                         '(for ParaView or a comparison of shapes)')
-    p.add_argument('--mu', type=float, default=17241.4)
-    p.add_argument('--kappa', type=float, default=166666.7)
-    p.add_argument('--friction', type=float, default=0.5)
+    p.add_argument('--mu', type=float, default=17241.4,
+                   help='shear modulus (Pa)')
+    p.add_argument('--kappa', type=float, default=166666.7,
+                   help='bulk modulus (Pa): E = 50 kPa, nu = 0.45')
+    p.add_argument('--friction', type=float, default=0.5,
+                   help='Coulomb friction coefficient (1)')
     p.add_argument('--contact', choices=('surface', 'node'),
                    default='surface',
                    help='surface-to-surface (the default) or node-to-surface '
