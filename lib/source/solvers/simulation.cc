@@ -93,7 +93,7 @@ namespace softgrasp
     if (folding.records > 0)
       pcout << "Warning: " << folding.records << " recorded step(s) had a "
             << "folded element (J <= 0 at a cell vertex), the first at t = "
-            << folding.first_time << " s: refine the mesh where it folds."
+            << folding.first_time << " s (see the first warning)."
             << std::endl;
     timers.print_wall_time_statistics(comm);
   }
@@ -262,10 +262,11 @@ namespace softgrasp
               << " s: J = det F = " << corner.J
               << " at a cell vertex at reference position " << corner.position
               << " m (positive at the quadrature points, so the solver "
-              << "accepts it). Forces from here on can be an artefact of "
-              << "a mesh too coarse for this deformation. Fix: refine the "
-              << "mesh there (e.g. Mesh/Block/Fine zone, or a global "
-              << "refinement); column 'min_corner_J' of the history."
+              << "accepts it). Forces after a fold are not to be trusted: "
+              << "the mesh is too coarse there, or the tissue creases "
+              << "(self-contact is not modelled). Fix: refine the mesh there "
+              << "(e.g. Mesh/Block/Fine zone) and see whether the fold "
+              << "stays; column 'min_corner_J' of the history."
               << std::endl;
       ++folding.records;
     }
