@@ -93,8 +93,7 @@ namespace softgrasp
     if (folding.records > 0)
       pcout << "Warning: " << folding.records << " recorded step(s) had a "
             << "folded element (J <= 0 at a cell vertex), the first at t = "
-            << folding.first_time << " s (see the first warning)."
-            << std::endl;
+            << folding.first_time << " s (see the first warning)." << std::endl;
     timers.print_wall_time_statistics(comm);
   }
 
@@ -266,8 +265,7 @@ namespace softgrasp
               << "the mesh is too coarse there, or the tissue creases "
               << "(self-contact is not modelled). Fix: refine the mesh there "
               << "(e.g. Mesh/Block/Fine zone) and see whether the fold "
-              << "stays; column 'min_corner_J' of the history."
-              << std::endl;
+              << "stays; column 'min_corner_J' of the history." << std::endl;
       ++folding.records;
     }
     folding.now = corner.folded();
