@@ -20,7 +20,14 @@ import tempfile
 
 def curve(path):
     """{pull (mm, rounded to 0.01): (normal, drag)} of one file."""
-    rows = list(csv.DictReader(open(path)))
+    try:
+        rows = list(csv.DictReader(open(path)))
+    except OSError as e:
+        sys.exit('compare.py: cannot read %s (%s). Fix: give the CSV of a '
+                 'finished run.' % (path, e.strerror))
+    if not rows:
+        sys.exit('compare.py: %s has no data rows. Fix: give the CSV of a '
+                 'run that wrote at least one step.' % path)
     out = {}
     if rows and 'pull_mm' in rows[0]:
         for r in rows:

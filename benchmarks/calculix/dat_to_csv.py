@@ -15,7 +15,12 @@ import sys
 
 def records(path):
     """(set name, time, force) per total in the file, in order."""
-    text = open(path).read()
+    try:
+        text = open(path).read()
+    except OSError as e:
+        sys.exit('dat_to_csv.py: cannot read %s (%s). Fix: give the .dat '
+                 'file of a CalculiX run of deep_drag_3d_inp.py.' % (
+                     path, e.strerror))
     pattern = re.compile(r'total force \(fx,fy,fz\) for set (\S+) and time\s+'
                          r'(\S+)\s+(\S+)\s+(\S+)\s+(\S+)')
     for m in pattern.finditer(text):
@@ -24,6 +29,8 @@ def records(path):
 
 
 def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
     rows, offset, last = {}, 0.0, 0.0
     for name, t, f in records(sys.argv[1]):
         if t + offset < last - 1e-9:   # a step that restarts its time

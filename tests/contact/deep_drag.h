@@ -9,6 +9,7 @@
 #include "problem_file.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 

@@ -2,6 +2,9 @@
 #include <deal.II/fe/fe_values.h>
 #include <softgrasp/postprocess/corner_jacobian.h>
 
+#include <cmath>
+#include <limits>
+
 namespace softgrasp
 {
   using namespace dealii;
