@@ -12,11 +12,19 @@
 //  - the potential never rose along an accepted Newton update and every
 //    direction descended (the history's counts, recorded by the solver,
 //    not assumed);
-//  - Hertz's force within 5 %, as contact/hertz.
+//  - Hertz's force within 5 %, as contact/hertz;
+//  - with 'Potential integration = faces' (the potential at the faces'
+//    Gauss points, the multipliers projected onto the nodes), every step
+//    settled, no rise of the potential, and Hertz's force within 8 %: on
+//    this mesh the faces' Gauss points hold the nodes off the sphere and
+//    the force is 6.7 % high (the nodes' gap is 3.2 % low); refined once
+//    more it is 1.9 % high (contact/hertz_faces).
 // Run on one and on two MPI ranks, with the same expected output.
 #include "../contact_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
+
+#include <softgrasp/contact/potential_contact.h>
 
 using namespace softgrasp_tests;
 
@@ -94,4 +102,32 @@ main(int argc, char **argv)
                   << closed_lm << ")" << std::endl;
   SG_CHECK(closed_ip == closed_lm, "the same closed nodes");
   SG_CHECK_CLOSE(f_ip.back(), exact.force, 0.05, 0, "Hertz force within 5 %");
+
+  // the same potential at the Gauss points of the faces: its coarse-mesh
+  // error (contact/hertz_faces shows it converging)
+  auto faces = make_solver<3>(
+      hertz_prm(8, 1.5, 0.05, 1, 4, "output-ipf", "iterative", 1) +
+      "subsection Contact\n set Enforcement = incremental potential\n"
+      " set Potential integration = faces\nend\n");
+  faces->run();
+  const auto f_faces = step_forces(*faces);
+  SG_CHECK(f_faces.size() == 4, "four load steps");
+  unsigned int faces_increases = 0, unsettled = 0;
+  for (std::size_t row = 1; row < faces->history().rows.size(); ++row)
+  {
+    faces_increases += faces->history().value(row, "energy_increases") +
+                       faces->history().value(row, "non_descent_directions");
+    unsettled += faces->history().value(row, "unsettled");
+  }
+  const double error = f_faces.back() / exact.force - 1;
+  dealii::deallog << "on faces: force " << f_faces.back() << " N (Hertz "
+                  << exact.force << " N, error within "
+                  << (std::abs(error) < 0.07 ? "7 %" : "8 %")
+                  << "), energy increases and non-descent directions "
+                  << faces_increases << ", unsettled steps " << unsettled
+                  << std::endl;
+  SG_CHECK(faces_increases == 0, "the face potential never rose");
+  SG_CHECK(unsettled == 0, "every step settled");
+  SG_CHECK_CLOSE(
+      f_faces.back(), exact.force, 0.08, 0, "Hertz force within 8 % on faces");
 }

@@ -15,12 +15,14 @@
 // displacement, with at least one contact node closed and one open there
 // (checked). Variants add friction (mu = 0.3, the lagged normal forces of
 // the converged step), gravity (a dead load) and the inertia of an
-// implicit dynamic step.
+// implicit dynamic step, and the potential integrated at the Gauss points
+// of the faces ('Potential integration = faces').
 #include "../contact_factory.h"
 #include "../material_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
 
+#include <softgrasp/contact/potential_contact.h>
 #include <softgrasp/solvers/simulation_access.h>
 
 using namespace softgrasp_tests;
@@ -38,6 +40,7 @@ namespace
     double       friction = 0;
     bool         gravity  = false;
     bool         dynamic  = false;
+    bool         faces    = false; ///< 'Potential integration = faces'
   };
 
   std::string material_prm(const std::string &name)
@@ -77,7 +80,8 @@ namespace
       << "subsection Contact\n set Enforcement = incremental potential\n"
       // a soft penalty: the closed node's gap (lam/k in the augmented
       // Lagrangian's closed range) larger than the perturbation below
-      << " set Penalty factor = 1\nend\n";
+      << " set Penalty factor = 1\n set Potential integration = "
+      << (c.faces ? "faces" : "nodes") << "\nend\n";
     const std::string T    = c.dynamic ? "0.01" : "1"; // s
     const std::string axis = three ? "0, 0, " : "0, ";
     const std::string z    = three ? "" : ", 0";
@@ -149,9 +153,15 @@ namespace
     SG_CHECK(solid.assemble(false).ok, "no inverted element");
     const dealii::TrilinosWrappers::MPI::Vector gradient =
         solid.residual_vector();
-    for (const auto &node : simulation.contact()->nodes())
-      ++(node.status == softgrasp::ContactStatus::inactive ? errors.open
-                                                           : errors.closed);
+    // the closed and open points of the potential: nodes, or the faces'
+    // Gauss points
+    const auto *potential =
+        dynamic_cast<const softgrasp::PotentialContact<dim> *>(
+            simulation.contact());
+    SG_CHECK(potential != nullptr, "the incremental potential");
+    const auto [points, closed] = potential->count_points();
+    errors.closed               = closed;
+    errors.open                 = points - closed;
     solid.assemble(true);
     const auto  &K     = solid.tangent_matrix();
     const double h     = 1e-6 * L;
@@ -187,8 +197,9 @@ namespace
     dealii::deallog << dim << "D Q" << c.degree << " " << c.formulation << ", "
                     << c.material << (c.friction > 0 ? ", friction" : "")
                     << (c.gravity ? ", gravity" : "")
-                    << (c.dynamic ? ", inertia" : "") << ": " << e.free
-                    << " free dofs, " << e.closed << " contact nodes closed, "
+                    << (c.dynamic ? ", inertia" : "")
+                    << (c.faces ? ", on faces" : "") << ": " << e.free
+                    << " free dofs, " << e.closed << " contact points closed, "
                     << e.open << " open; gradient and Hessian "
                     << (e.gradient <= 1e-6 && e.hessian <= 1e-6 ? "agree"
                                                                 : "DIFFER")
@@ -196,7 +207,7 @@ namespace
     std::cout << "  relative errors: gradient " << e.gradient << ", Hessian "
               << e.hessian << std::endl;
     SG_CHECK(e.closed >= 1 && e.open >= 1,
-             "a contact node closed and one open");
+             "a contact point closed and one open");
     SG_CHECK(e.gradient <= 1e-6, "dE/du is minus the residual");
     SG_CHECK(e.hessian <= 1e-6, "the tangent is the residual's derivative");
   }
@@ -221,4 +232,10 @@ main(int argc, char **argv)
   check<3>({3, 2, "mixed u-p-J", nh, 0, false, true});
   check<2>({2, 1, "mixed u-p-J", nh});
   check<2>({2, 2, "mixed u-p-J", hgo, 0.3, true, true});
+  // the potential at the faces' Gauss points: each couples a face's nodes
+  check<3>({3, 1, "displacement", nh, 0, false, false, true});
+  check<3>({3, 2, "mixed u-p-J", nh, 0.3, false, false, true});
+  check<3>({3, 2, "mixed u-p-J", hgo, 0.3, true, true, true});
+  check<2>({2, 1, "mixed u-p-J", nh, 0, false, false, true});
+  check<2>({2, 2, "mixed u-p-J", hgo, 0.3, true, true, true});
 }

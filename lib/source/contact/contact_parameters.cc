@@ -127,6 +127,21 @@ namespace softgrasp
         "'Maximum outer iterations' solves). If it fails, the lagged "
         "iterations go on from where they were. The log and the history "
         "('polished') show where it was used. 0: never. Unit: 1.");
+    prm.declare_entry(
+        "Potential integration",
+        "nodes",
+        Patterns::Selection("nodes|faces"),
+        "Incremental potential: where the gap and the friction potential are "
+        "evaluated on the slave surface. 'nodes': at each slave node, "
+        "weighted by its area (node-to-surface; the rigid surface may pass "
+        "between the nodes, and on a deep drag the nodes beside a rounded "
+        "end are pushed until a surface cell folds). 'faces': at the Gauss "
+        "points of each slave face (degree + 2 per direction), the position "
+        "interpolated from the face's nodes, each point with its own "
+        "multiplier and lag (segment-to-segment; the gap is enforced "
+        "between the nodes too, as in CalculiX's surface-to-surface "
+        "contact); about 4 to 16 times the points, the same unknowns. "
+        "Unit: none.");
     prm.leave_subsection();
   }
 
@@ -161,6 +176,7 @@ namespace softgrasp
     max_newton_iterations = prm.get_integer("Maximum Newton iterations");
     accept_unsettled      = prm.get("Unsettled steps") == "accept";
     polish_after          = prm.get_integer("Polish after");
+    integrate_on_faces    = prm.get("Potential integration") == "faces";
     prm.leave_subsection();
   }
 

@@ -26,21 +26,11 @@ namespace softgrasp
   {
     ContactSurface<dim>::setup(system);
     fd_step = 1e-7 * system.length_scale();
-    data.assign(node_list.size(), NodeData());
-    force_floor = 0;
-    for (unsigned int j = 0; j < data.size(); ++j)
-    {
-      const double area = node_list[j].reference_area;
-      // k = factor * 2 mu_0 h (N/m; per metre of thickness in 2D)
-      data[j].penalty = parameters.penalty_factor * 2 * shear_modulus *
-                        std::pow(area, (dim - 2.0) / (dim - 1.0));
-      data[j].spacing = std::pow(area, 1.0 / (dim - 1.0));
-      force_floor = std::max(force_floor, data[j].penalty * data[j].spacing);
-    }
-    // a change of normal force below that of a gap change of 1e-8 of the
-    // node spacing is round-off (a body that only touches: forces of
-    // 1e-13 N changing by 1e-15 N would never settle on a relative test)
-    force_floor = 1e-8 * Utilities::MPI::max(force_floor, comm);
+    if (parameters.integrate_on_faces)
+      make_face_points(system);
+    else
+      make_node_points();
+    set_penalties();
   }
 
   template <int dim>
@@ -48,13 +38,16 @@ namespace softgrasp
                                           const double            time)
   {
     const auto &u = system.ghosted_solution();
-    for (unsigned int j = 0; j < node_list.size(); ++j)
+    for (Node &node : node_list)
     {
-      Node &node          = node_list[j];
       node.last_converged = node.reference_position;
       for (unsigned int c = 0; c < dim; ++c)
         node.last_converged[c] += u[node.dofs[c]];
-      data[j].accepted = data[j].lag;
+    }
+    for (unsigned int i = 0; i < points.size(); ++i)
+    {
+      points[i].last_converged = position(i, u);
+      points[i].accepted       = points[i].lag;
     }
     place_bodies(time, poses_converged);
     step_changes = 0;
@@ -62,15 +55,15 @@ namespace softgrasp
 
   template <int dim> void PotentialContact<dim>::begin_step()
   {
-    for (auto &d : data)
-      d.lag = d.accepted;
+    for (auto &point : points)
+      point.lag = point.accepted;
   }
 
   template <int dim>
   NodalPotentialInput PotentialContact<dim>::potential_input(
-      const unsigned int j, const Eigen::Vector3d &x, const Proximity &p) const
+      const unsigned int i, const Eigen::Vector3d &x, const Proximity &p) const
   {
-    const NodeData     &d = data[j];
+    const Point        &d = points[i];
     NodalPotentialInput in;
     in.gap                  = p.body >= 0 ? p.gap : 1e300;
     in.n                    = p.body >= 0 ? p.normal : Eigen::Vector3d::UnitZ();
@@ -85,11 +78,11 @@ namespace softgrasp
     if (d.lag.body >= 0 && d.lag.normal_force > 0)
     {
       in.T = tangent_basis(d.lag.normal, dim);
-      // the node's motion relative to the rigid material point it sat at
+      // the point's motion relative to the rigid material point it sat at
       // when the last step converged
       const Pose &now = poses_now[d.lag.body][d.lag.geom];
       const Pose &old = poses_converged[d.lag.body][d.lag.geom];
-      in.w = x - now.to_world(old.to_local(node_list[j].last_converged));
+      in.w            = x - now.to_world(old.to_local(d.last_converged));
       if (dim == 2)
         in.w[2] = 0;
     }
@@ -98,16 +91,16 @@ namespace softgrasp
 
   template <int dim>
   typename PotentialContact<dim>::Proximity
-  PotentialContact<dim>::proximity(const unsigned int     j,
-                                   const Eigen::Vector3d &x)
+  PotentialContact<dim>::find_proximity(const unsigned int     i,
+                                        const Eigen::Vector3d &x)
   {
-    // The nearest geom; but a node that pressed another geom in the lag
+    // The nearest geom; but a point that pressed another geom in the lag
     // stays with it while the nearest one does not penetrate it by more
-    // than the settle tolerance of the node spacing: a node between two
-    // links would otherwise change geom (and normal, by tens of degrees)
-    // between outer iterations and never settle
+    // than the settle tolerance of the spacing: a node between two links
+    // would otherwise change geom (and normal, by tens of degrees) between
+    // outer iterations and never settle
     const Proximity nearest_one = nearest(x);
-    NodeData       &d           = data[j];
+    Point          &d           = points[i];
     d.nearest_gap  = nearest_one.body >= 0 ? nearest_one.gap : 1e300;
     const Lag &lag = d.lag;
     if (lag.body < 0 || !(lag.normal_force > 0) || nearest_one.body < 0 ||
@@ -122,34 +115,26 @@ namespace softgrasp
   {
     TimerOutput::Scope scope(timer, "contact");
     place_bodies(current_time, poses_now);
-    const auto  &u      = system.ghosted_solution();
-    double       energy = 0;
-    unsigned int active = 0, slipping = 0, changes = 0;
-    for (unsigned int j = 0; j < node_list.size(); ++j)
+    const auto  &u       = system.ghosted_solution();
+    double       energy  = 0;
+    unsigned int changes = 0;
+    for (unsigned int i = 0; i < points.size(); ++i)
     {
-      Node           &node = node_list[j];
-      Eigen::Vector3d x    = node.reference_position;
-      for (unsigned int c = 0; c < dim; ++c)
-      {
-        node.free[c] = !system.constraint_set().is_constrained(node.dofs[c]);
-        x[c] += u[node.dofs[c]];
-      }
-      const Proximity      p = proximity(j, x);
-      const NodalPotential potential =
-          evaluate_nodal_potential(potential_input(j, x, p));
-      const ContactStatus before = node.status;
-      node.status                = potential.status;
-      node.body                  = p.body;
-      node.geom                  = p.geom;
-      node.gap                   = p.gap;
-      node.normal       = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
-      node.force        = potential.force;
-      node.slip         = potential.slip;
-      data[j].potential = potential;
-      energy += potential.energy;
+      Point                &point = points[i];
+      const Eigen::Vector3d x     = position(i, u);
+      point.proximity             = find_proximity(i, x);
+      const ContactStatus before  = point.potential.status;
+      point.potential =
+          evaluate_nodal_potential(potential_input(i, x, point.proximity));
+      energy += point.potential.energy;
+      changes += point.potential.status != before;
+    }
+    update_nodes(system);
+    unsigned int active = 0, slipping = 0;
+    for (const Node &node : node_list)
+    {
       active += node.status != ContactStatus::inactive;
       slipping += node.status == ContactStatus::slip;
-      changes += node.status != before;
     }
     total_energy = Utilities::MPI::sum(energy, comm);
     active_count = Utilities::MPI::sum(active, comm);
@@ -168,18 +153,16 @@ namespace softgrasp
     double       largest = 0, change = 0, turn = 0, penetration = 0;
     double       beyond = 0; // the largest |f_t| - mu lambda (N)
     const double mu     = parameters.friction_coefficient;
-    for (unsigned int j = 0; j < node_list.size(); ++j)
+    for (const Point &d : points)
     {
-      const Node     &node = node_list[j];
-      const NodeData &d    = data[j];
-      const double    f_n  = d.potential.normal_force;
-      largest              = std::max(largest, f_n);
+      const double f_n = d.potential.normal_force;
+      largest          = std::max(largest, f_n);
       beyond = std::max(beyond, d.potential.friction.norm() - mu * f_n);
       change = std::max(change, std::abs(f_n - d.lag.normal_force));
       if (f_n > 0 && d.lag.normal_force > 0)
-        turn = std::max(turn, (node.normal - d.lag.normal).norm());
-      if (node.body >= 0)
-        penetration = std::max(penetration, -node.gap / d.spacing);
+        turn = std::max(turn, (d.proximity.normal - d.lag.normal).norm());
+      if (d.proximity.body >= 0)
+        penetration = std::max(penetration, -d.proximity.gap / d.spacing);
       penetration = std::max(penetration, -d.nearest_gap / d.spacing);
     }
     largest     = Utilities::MPI::max(largest, comm);
@@ -188,6 +171,16 @@ namespace softgrasp
     penetration = Utilities::MPI::max(penetration, comm);
     beyond      = Utilities::MPI::max(beyond, comm);
     excess      = mu * largest > 0 ? std::max(0.0, beyond) / (mu * largest) : 0;
+    if (parameters.integrate_on_faces)
+    {
+      // the face points outnumber the nodes: the part of their force
+      // changes no node feels does not move the solution, and the gap is
+      // closed in the weighted mean int N_k g dA, not at every point
+      const auto nodal = nodal_settle_measures();
+      change           = nodal[0];
+      largest          = nodal[1];
+      penetration      = nodal[2];
+    }
     const double tolerance = parameters.settle_tolerance;
     const bool   settled   = change <= tolerance * largest + force_floor &&
                          turn <= tolerance && penetration <= tolerance;
@@ -200,21 +193,22 @@ namespace softgrasp
     report = line.str();
     if (settled)
       return true;
-    for (unsigned int j = 0; j < node_list.size(); ++j)
+    for (Point &point : points)
     {
-      const Node &node = node_list[j];
-      Lag        &lag  = data[j].lag;
-      lag.multiplier   = data[j].potential.normal_force; // Uzawa
-      lag.normal_force = data[j].potential.normal_force;
+      Lag &lag         = point.lag;
+      lag.multiplier   = point.potential.normal_force; // Uzawa
+      lag.normal_force = point.potential.normal_force;
       if (lag.normal_force > 0)
       {
-        lag.normal = node.normal;
-        lag.body   = node.body;
-        lag.geom   = node.geom;
+        lag.normal = point.proximity.normal;
+        lag.body   = point.proximity.body;
+        lag.geom   = point.proximity.geom;
       }
       else
         lag.body = -1;
     }
+    if (parameters.integrate_on_faces)
+      project_multipliers();
     return false;
   }
 
@@ -250,13 +244,10 @@ namespace softgrasp
       TrilinosWrappers::MPI::Vector &residual) const
   {
     // residual = f_ext - f_int + the contact force (= -grad of the total)
-    for (unsigned int j = 0; j < node_list.size(); ++j)
-    {
-      const Node &node = node_list[j];
+    for (const Node &node : node_list)
       for (unsigned int a = 0; a < dim; ++a)
-        if (node.free[a] && data[j].potential.force[a] != 0)
-          residual[node.dofs[a]] += data[j].potential.force[a];
-    }
+        if (node.free[a] && node.force[a] != 0)
+          residual[node.dofs[a]] += node.force[a];
     residual.compress(VectorOperation::add);
   }
 
@@ -281,33 +272,45 @@ namespace softgrasp
       TrilinosWrappers::SparseMatrix  &tangent,
       TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    FullMatrix<double>                   H(dim, dim);
-    Vector<double>                       f(dim);
-    std::vector<types::global_dof_index> dofs(dim);
-    for (unsigned int j = 0; j < node_list.size(); ++j)
+    FullMatrix<double> H;
+    Vector<double>     f;
+    for (const Patch &patch : patches)
     {
-      const Node           &node = node_list[j];
-      const NodalPotential &p    = data[j].potential;
-      if (p.force.isZero(0) && p.hessian.isZero(0))
-        continue;
-      Eigen::Matrix3d hessian = p.hessian;
-      if (project)
+      const unsigned int n = patch.dofs.size();
+      H.reinit(n, n);
+      f.reinit(n);
+      bool any = false;
+      for (unsigned int i = patch.begin; i < patch.end; ++i)
       {
-        // the nearest positive semi-definite matrix: negative eigenvalues
-        // (the curvature of the rigid surface) set to zero
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(hessian);
-        hessian = eigen.eigenvectors() *
-                  eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
-                  eigen.eigenvectors().transpose();
+        const NodalPotential &p = points[i].potential;
+        if (p.force.isZero(0) && p.hessian.isZero(0))
+          continue;
+        any                     = true;
+        Eigen::Matrix3d hessian = p.hessian;
+        if (project)
+        {
+          // the nearest positive semi-definite matrix: negative eigenvalues
+          // (the curvature of the rigid surface) set to zero
+          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(hessian);
+          hessian = eigen.eigenvectors() *
+                    eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
+                    eigen.eigenvectors().transpose();
+        }
+        // x = X + sum_k N_k u_k: force N_k f, Hessian N_k N_l H
+        const auto &N = points[i].shape;
+        for (unsigned int r = 0; r < n; ++r)
+        {
+          const unsigned int k = r / dim, a = r % dim;
+          if (!patch.free[r])
+            continue;
+          f[r] += N[k] * p.force[a];
+          for (unsigned int s = 0; s < n; ++s)
+            if (patch.free[s])
+              H(r, s) += N[k] * N[s / dim] * hessian(a, s % dim);
+        }
       }
-      for (unsigned int a = 0; a < dim; ++a)
-      {
-        dofs[a] = node.dofs[a];
-        f[a]    = node.free[a] ? p.force[a] : 0;
-        for (unsigned int c = 0; c < dim; ++c)
-          H(a, c) = node.free[a] && node.free[c] ? hessian(a, c) : 0;
-      }
-      constraints.distribute_local_to_global(H, f, dofs, tangent, rhs);
+      if (any)
+        constraints.distribute_local_to_global(H, f, patch.dofs, tangent, rhs);
     }
     tangent.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
@@ -332,9 +335,9 @@ namespace softgrasp
   {
     if (parameters.friction_coefficient == 0)
       return false; // nothing is lagged but the multipliers
-    lag_before_polish.resize(data.size());
-    for (unsigned int j = 0; j < data.size(); ++j)
-      lag_before_polish[j] = data[j].lag;
+    lag_before_polish.resize(points.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      lag_before_polish[i] = points[i].lag;
     polishing = true;
     return true;
   }
@@ -344,8 +347,8 @@ namespace softgrasp
     polishing = false;
     if (keep)
       return;
-    for (unsigned int j = 0; j < data.size(); ++j)
-      data[j].lag = lag_before_polish[j];
+    for (unsigned int i = 0; i < points.size(); ++i)
+      points[i].lag = lag_before_polish[i];
   }
 
   template <int dim> unsigned int PotentialContact<dim>::polish_after() const
@@ -388,10 +391,11 @@ namespace softgrasp
         out << ", nearest geom "
             << this->bodies.geom_label(node.body, node.geom) << " at gap "
             << node.gap << " m";
-      out << ", normal force " << data[j].potential.normal_force
-          << " N (lagged " << data[j].lag.normal_force << " N), slip "
-          << node.slip.norm() << " m, force (" << node.force.transpose()
-          << ") N";
+      if (!parameters.integrate_on_faces) // point j is node j
+        out << ", normal force " << points[j].potential.normal_force
+            << " N (lagged " << points[j].lag.normal_force << " N)";
+      out << ", slip " << node.slip.norm() << " m, force ("
+          << node.force.transpose() << ") N";
       return out.str();
     }
     return "";

@@ -51,6 +51,11 @@ namespace softgrasp
     /// (and again after as many more) the step is polished: Newton with
     /// friction against the current normal forces; 0: never.
     unsigned int polish_after = 10;
+    /// Incremental potential: where its contact terms are evaluated on the
+    /// slave surface: at the nodes, each weighted by its area (false), or
+    /// at the Gauss points of each slave face, the gap interpolated
+    /// between the nodes (true; 'Potential integration = faces').
+    bool integrate_on_faces = false;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

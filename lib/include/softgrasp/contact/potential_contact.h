@@ -1,9 +1,12 @@
 #ifndef softgrasp_contact_potential_contact_h
 #define softgrasp_contact_potential_contact_h
 
+#include <array>
 #include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <softgrasp/contact/implicit_contact.h>
 #include <softgrasp/contact/nodal_potential.h>
+#include <vector>
 
 namespace softgrasp
 {
@@ -28,6 +31,13 @@ namespace softgrasp
    * that angle, and the deepest penetration is at most that fraction of
    * the node spacing. Its rows are the node's own equilibrium rows; it
    * adds no constraints, and its tangent stays symmetric.
+   *
+   * 'Contact/Potential integration = faces' evaluates these terms at the
+   * Gauss points of the slave faces instead of at the nodes (each point
+   * with its own multiplier, lag and penalty k = factor 2 mu_0 w / h for
+   * its weight w): the position, gap and slip are interpolated from the
+   * face's nodes, so a rigid edge cannot push in between the nodes. The
+   * nodes then report the forces summed over their faces.
    */
   template <int dim> class PotentialContact : public ImplicitContact<dim>
   {
@@ -75,6 +85,10 @@ namespace softgrasp
     std::string
     describe_node(const dealii::types::global_dof_index dof) const override;
 
+    /// The global numbers of points of the potential (nodes or face Gauss
+    /// points) and of those closed at the last evaluation. Collective.
+    std::pair<unsigned int, unsigned int> count_points() const;
+
   private:
     using Proximity = typename ContactSurface<dim>::Proximity;
     using ContactSurface<dim>::node_list;
@@ -87,8 +101,9 @@ namespace softgrasp
     using ContactSurface<dim>::nearest;
     using ContactSurface<dim>::normal_at;
     using ContactSurface<dim>::place_bodies;
+    using ContactSurface<dim>::cell_nodes;
 
-    /// What a node's potential holds fixed within a Newton solve.
+    /// What a point's potential holds fixed within a Newton solve.
     struct Lag
     {
       double          multiplier   = 0;                       ///< lam (N)
@@ -98,27 +113,81 @@ namespace softgrasp
       unsigned int    geom         = 0;
     };
 
-    /// Per node: its penalty and spacing, the lag of the solve and of the
-    /// last converged step, and its potential at the last evaluation.
-    struct NodeData
+    /**
+     * One point of the potential: a slave node ('Potential integration =
+     * nodes') or a Gauss point of a slave face ('faces'). Its position is
+     * x = X + sum_k N_k u_k over the nodes of its patch; its weight is the
+     * node's area or the point's reference JxW. Holds its penalty and
+     * spacing, the lag of the solve and of the last converged step, and its
+     * potential at the last evaluation.
+     */
+    struct Point
     {
-      double         penalty = 0; ///< k (N/m)
-      double         spacing = 0; ///< h (m)
-      Lag            lag, accepted;
-      NodalPotential potential;
+      unsigned int        patch = 0;
+      std::vector<double> shape;                                    ///< N_k
+      Eigen::Vector3d reference_position = Eigen::Vector3d::Zero(); ///< X (m)
+      Eigen::Vector3d last_converged     = Eigen::Vector3d::Zero(); ///< x (m)
+      double          weight             = 0; ///< m^2 (m in 2D)
+      double          penalty            = 0; ///< k (N/m)
+      double          spacing            = 0; ///< h (m)
+      Lag             lag, accepted;
+      NodalPotential  potential;
+      Proximity       proximity; ///< of the last evaluation
       /// The gap to the nearest geom at the last evaluation (m; that of
-      /// the potential may be to the lag's geom, proximity())
+      /// the potential may be to the lag's geom, find_proximity())
       double nearest_gap = 1e300;
     };
 
-    /// The input of node @p j's potential at position @p x, nearest to
-    /// geom @p p.
-    /// The geom node @p j at @p x (m) acts with: the nearest, or the
-    /// lag's while the nearest does not penetrate the node beyond the
-    /// settle tolerance. Records the nearest gap.
-    Proximity proximity(const unsigned int j, const Eigen::Vector3d &x);
+    /// The nodes a run of points interpolates: one slave node, or the
+    /// support points of one slave face of an owned cell.
+    struct Patch
+    {
+      std::vector<dealii::types::global_dof_index> dofs; ///< [k * dim + c]
+      std::vector<bool>                            free; ///< not constrained
+      unsigned int                                 begin = 0, end = 0;
+    };
 
-    NodalPotentialInput potential_input(const unsigned int     j,
+    /// One point per slave node (patch j = node j).
+    void make_node_points();
+    /// The Gauss points of the slave faces of the owned cells.
+    void make_face_points(const SolidSystem<dim> &system);
+    /// The penalty and spacing of each point, and force_floor.
+    void set_penalties();
+    /// Point @p i's position for the displacement @p u (ghosted).
+    Eigen::Vector3d
+    position(const unsigned int                           i,
+             const dealii::TrilinosWrappers::MPI::Vector &u) const;
+    /// The nodes' force, status, slip and nearest geom from the points'
+    /// potentials (the force on face points summed over the faces of all
+    /// ranks); the free dofs.
+    void update_nodes(const SolidSystem<dim> &system);
+    /// Face mode: the largest change of a node's normal force against the
+    /// lag, sum_q N_k (lambda_q - lambda^k_q) (N), the largest normal
+    /// force sum_q N_k lambda_q (N), and the deepest weighted penetration
+    /// -sum_q N_k w_q g_q / sum_q N_k w_q over the node spacing (1; the
+    /// gaps capped at the spacing). Collective.
+    std::array<double, 3> nodal_settle_measures();
+    /**
+     * Face mode, the Uzawa update: the multiplier field lives on the nodes,
+     * Lambda_k = max(0, sum_q N_k lambda_q / sum_q N_k w_q), the point
+     * forces projected onto the nodal basis, and each point's multiplier is
+     * w_q sum_k N_k Lambda_k. Where the contact is closed the step then
+     * converges to zero weighted gaps int N_k g dA = 0 (the mortar
+     * condition: as many as there are nodes), not to a zero gap at every
+     * Gauss point, which the nodes cannot meet and which would let the
+     * multipliers gather on a few points and stiffen the surface.
+     */
+    void project_multipliers();
+
+    /**
+     * The geom point @p i at @p x (m) acts with: the nearest, or the
+     * lag's while the nearest does not penetrate the point beyond the
+     * settle tolerance. Records the nearest gap.
+     */
+    Proximity find_proximity(const unsigned int i, const Eigen::Vector3d &x);
+
+    /// The input of point @p i's potential at position @p x, to geom @p p.
+    NodalPotentialInput potential_input(const unsigned int     i,
                                         const Eigen::Vector3d &x,
                                         const Proximity       &p) const;
 
@@ -126,8 +195,16 @@ namespace softgrasp
     double                         fd_step = 1e-9; ///< m
     dealii::TimerOutput           &timer;
     std::vector<std::vector<Pose>> poses_converged;
-    std::vector<NodeData>          data; ///< per node of node_list
-    double                         total_energy = 0;
+    std::vector<Point>             points;
+    std::vector<Patch>             patches;
+    /// Face mode: the nodes' forces, slips and closed weights, summed over
+    /// the faces (writable ghosted vectors of the solid's dofs).
+    dealii::TrilinosWrappers::MPI::Vector nodal_force, nodal_slip, nodal_weight;
+    dealii::TrilinosWrappers::MPI::Vector nodal_change, nodal_gap; ///< scratch
+    /// Face mode: Lambda_k (Pa) in component 0 of each node, owned and
+    /// ghosted.
+    dealii::TrilinosWrappers::MPI::Vector owned_multiplier, nodal_multiplier;
+    double                                total_energy = 0;
     /// Normal-force changes below this are round-off (N): 1e-8 of the
     /// largest k h (settle()).
     double force_floor = 0;
@@ -135,7 +212,7 @@ namespace softgrasp
     /// In the polish (begin_polish()): friction against the current normal
     /// forces; the lag it started from.
     bool             polishing = false;
-    std::vector<Lag> lag_before_polish;
+    std::vector<Lag> lag_before_polish; ///< per point
     double           excess = 0; ///< coulomb_excess() of the last settle()
     unsigned int     change_count = 0, step_changes = 0;
   };

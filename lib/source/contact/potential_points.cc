@@ -1,0 +1,324 @@
+// Where the incremental potential's contact terms live on the slave
+// surface (PotentialContact's points and patches), and how the nodes report
+// the forces of points between them.
+
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector_operation.h>
+#include <softgrasp/contact/potential_contact.h>
+
+namespace softgrasp
+{
+  using namespace dealii;
+
+  template <int dim> void PotentialContact<dim>::make_node_points()
+  {
+    points.assign(node_list.size(), Point());
+    patches.assign(node_list.size(), Patch());
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const Node &node  = node_list[j];
+      Patch      &patch = patches[j];
+      patch.dofs.assign(node.dofs.begin(), node.dofs.end());
+      patch.free.assign(dim, true);
+      patch.begin              = j;
+      patch.end                = j + 1;
+      Point &point             = points[j];
+      point.patch              = j;
+      point.shape              = {1.0};
+      point.reference_position = node.reference_position;
+      point.last_converged     = node.reference_position;
+      point.weight             = node.reference_area;
+      point.spacing = std::pow(node.reference_area, 1.0 / (dim - 1.0));
+    }
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::make_face_points(const SolidSystem<dim> &system)
+  {
+    const auto                          &fe = system.fe();
+    FEFaceValues<dim>                    face_values(system.mapping(),
+                                  fe,
+                                  QGauss<dim - 1>(fe.degree + 2),
+                                  update_values | update_JxW_values |
+                                      update_quadrature_points);
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    points.clear();
+    patches.clear();
+    for (const auto &cell : system.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary() ||
+              !this->is_slave_boundary(cell->face(f)->boundary_id()))
+            continue;
+          face_values.reinit(cell, f);
+          cell->get_dof_indices(indices);
+          Patch                     patch;
+          std::vector<unsigned int> on_face; // support points of the face
+          for (unsigned int k = 0; k < cell_nodes.size(); ++k)
+            if (fe.has_support_on_face(cell_nodes[k][0], f))
+            {
+              on_face.push_back(k);
+              for (unsigned int c = 0; c < dim; ++c)
+                patch.dofs.push_back(indices[cell_nodes[k][c]]);
+            }
+          patch.free.assign(patch.dofs.size(), true);
+          patch.begin = points.size();
+          double area = 0;
+          for (const auto q : face_values.quadrature_point_indices())
+            area += face_values.JxW(q);
+          // the spacing of the face's nodes, as a node's in the node mode
+          const double spacing =
+              std::pow(area, 1.0 / (dim - 1.0)) / std::max(1u, fe.degree);
+          for (const auto q : face_values.quadrature_point_indices())
+          {
+            Point point;
+            point.patch = patches.size();
+            for (const unsigned int k : on_face)
+              point.shape.push_back(
+                  face_values.shape_value(cell_nodes[k][0], q));
+            for (unsigned int d = 0; d < dim; ++d)
+              point.reference_position[d] = face_values.quadrature_point(q)[d];
+            point.last_converged = point.reference_position;
+            point.weight         = face_values.JxW(q);
+            point.spacing        = spacing;
+            points.push_back(point);
+          }
+          patch.end = points.size();
+          patches.push_back(patch);
+        }
+    for (auto *v :
+         {&nodal_force, &nodal_slip, &nodal_weight, &nodal_change, &nodal_gap})
+      v->reinit(system.locally_owned_dofs(),
+                system.locally_relevant_dofs(),
+                comm,
+                true);
+    owned_multiplier.reinit(system.locally_owned_dofs(), comm);
+    nodal_multiplier.reinit(
+        system.locally_owned_dofs(), system.locally_relevant_dofs(), comm);
+  }
+
+  template <int dim> void PotentialContact<dim>::set_penalties()
+  {
+    // k = factor * 2 mu_0 w / h (N/m; per metre of thickness in 2D): for a
+    // node of area w = h^(dim-1), factor * 2 mu_0 h^(dim-2)
+    force_floor = 0;
+    for (Point &point : points)
+    {
+      point.penalty = parameters.penalty_factor * 2 * shear_modulus *
+                      point.weight / point.spacing;
+      force_floor = std::max(force_floor, point.penalty * point.spacing);
+    }
+    // a change of normal force below that of a gap change of 1e-8 of the
+    // spacing is round-off (a body that only touches: forces of 1e-13 N
+    // changing by 1e-15 N would never settle on a relative test)
+    force_floor = 1e-8 * Utilities::MPI::max(force_floor, comm);
+  }
+
+  template <int dim>
+  Eigen::Vector3d
+  PotentialContact<dim>::position(const unsigned int                   i,
+                                  const TrilinosWrappers::MPI::Vector &u) const
+  {
+    const Point    &point = points[i];
+    const Patch    &patch = patches[point.patch];
+    Eigen::Vector3d x     = point.reference_position;
+    for (unsigned int k = 0; k < point.shape.size(); ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] += point.shape[k] * u[patch.dofs[k * dim + c]];
+    return x;
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::update_nodes(const SolidSystem<dim> &system)
+  {
+    const auto &constraints = system.constraint_set();
+    for (Patch &patch : patches)
+      for (unsigned int r = 0; r < patch.dofs.size(); ++r)
+        patch.free[r] = !constraints.is_constrained(patch.dofs[r]);
+    for (Node &node : node_list)
+      for (unsigned int c = 0; c < dim; ++c)
+        node.free[c] = !constraints.is_constrained(node.dofs[c]);
+    if (!parameters.integrate_on_faces)
+    {
+      for (unsigned int j = 0; j < node_list.size(); ++j)
+      {
+        Node            &node  = node_list[j];
+        const Point     &point = points[j];
+        const Proximity &p     = point.proximity;
+        node.status            = point.potential.status;
+        node.body              = p.body;
+        node.geom              = p.geom;
+        node.gap               = p.gap;
+        node.normal = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
+        node.force  = point.potential.force;
+        node.slip   = point.potential.slip;
+      }
+      return;
+    }
+    // the force on node k is sum_q N_k(x_q) f_q; its slip the mean of its
+    // closed points' slips, weighted by |N_k| w_q; it slips when most of
+    // that weight does
+    nodal_force  = 0;
+    nodal_slip   = 0;
+    nodal_weight = 0;
+    for (const Patch &patch : patches)
+      for (unsigned int i = patch.begin; i < patch.end; ++i)
+      {
+        const NodalPotential &p = points[i].potential;
+        if (p.status == ContactStatus::inactive && p.force.isZero(0))
+          continue;
+        for (unsigned int k = 0; k < points[i].shape.size(); ++k)
+        {
+          const double N = points[i].shape[k];
+          const double w = std::abs(N) * points[i].weight;
+          for (unsigned int c = 0; c < dim; ++c)
+          {
+            nodal_force[patch.dofs[k * dim + c]] += N * p.force[c];
+            nodal_slip[patch.dofs[k * dim + c]] += w * p.slip[c];
+          }
+          nodal_weight[patch.dofs[k * dim]] += w;
+          if (p.status == ContactStatus::slip)
+            nodal_weight[patch.dofs[k * dim + 1]] += w;
+        }
+      }
+    for (auto *v : {&nodal_force, &nodal_slip, &nodal_weight})
+      v->compress(VectorOperation::add);
+    // the geom and gap a node reports are those of its own position
+    // (a node between two links reports its face points' forces to the
+    // nearer one)
+    const auto &u = system.ghosted_solution();
+    for (Node &node : node_list)
+    {
+      Eigen::Vector3d x = node.reference_position;
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        x[c] += u[node.dofs[c]];
+        node.force[c] = nodal_force[node.dofs[c]];
+      }
+      const double closed   = nodal_weight[node.dofs[0]];
+      const double slipping = nodal_weight[node.dofs[1]];
+      node.status           = !(closed > 0)           ? ContactStatus::inactive
+                              : 2 * slipping > closed ? ContactStatus::slip
+                                                      : ContactStatus::stick;
+      node.slip.setZero();
+      for (unsigned int c = 0; c < dim && closed > 0; ++c)
+        node.slip[c] = nodal_slip[node.dofs[c]] / closed;
+      const Proximity p = nearest(x);
+      node.body         = p.body;
+      node.geom         = p.geom;
+      node.gap          = p.gap;
+      node.normal       = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
+    }
+  }
+
+  template <int dim>
+  std::array<double, 3> PotentialContact<dim>::nodal_settle_measures()
+  {
+    // per node, component 0 and 1: the change and the force; of nodal_gap:
+    // sum_q N_k w_q g_q and sum_q N_k w_q
+    nodal_change = 0;
+    nodal_gap    = 0;
+    for (const Patch &patch : patches)
+      for (unsigned int i = patch.begin; i < patch.end; ++i)
+      {
+        const Point &point  = points[i];
+        const double lambda = point.potential.normal_force;
+        const double lagged = point.lag.normal_force;
+        double       gap    = std::min(point.nearest_gap, point.spacing);
+        if (point.proximity.body >= 0)
+          gap = std::min(gap, point.proximity.gap);
+        for (unsigned int k = 0; k < point.shape.size(); ++k)
+        {
+          const double N = point.shape[k];
+          nodal_change[patch.dofs[k * dim]] += N * (lambda - lagged);
+          nodal_change[patch.dofs[k * dim + 1]] += N * lambda;
+          nodal_gap[patch.dofs[k * dim]] += N * point.weight * gap;
+          nodal_gap[patch.dofs[k * dim + 1]] += N * point.weight;
+        }
+      }
+    nodal_change.compress(VectorOperation::add);
+    nodal_gap.compress(VectorOperation::add);
+    double change = 0, largest = 0, penetration = 0;
+    for (const Node &node : node_list)
+    {
+      const double area    = nodal_gap[node.dofs[1]];
+      const double spacing = std::pow(node.reference_area, 1.0 / (dim - 1.0));
+      change  = std::max(change, std::abs(nodal_change[node.dofs[0]]));
+      largest = std::max<double>(largest, nodal_change[node.dofs[1]]);
+      if (area > 0)
+        penetration =
+            std::max(penetration, -nodal_gap[node.dofs[0]] / area / spacing);
+    }
+    return {{Utilities::MPI::max(change, comm),
+             Utilities::MPI::max(largest, comm),
+             Utilities::MPI::max(penetration, comm)}};
+  }
+
+  template <int dim> void PotentialContact<dim>::project_multipliers()
+  {
+    // component 0 of a node: sum_q N_k lambda_q, component 1: sum_q N_k w_q
+    nodal_change = 0;
+    for (const Patch &patch : patches)
+      for (unsigned int i = patch.begin; i < patch.end; ++i)
+        for (unsigned int k = 0; k < points[i].shape.size(); ++k)
+        {
+          const double N = points[i].shape[k];
+          nodal_change[patch.dofs[k * dim]] +=
+              N * points[i].potential.normal_force;
+          nodal_change[patch.dofs[k * dim + 1]] += N * points[i].weight;
+        }
+    nodal_change.compress(VectorOperation::add);
+    owned_multiplier = 0;
+    for (const Node &node : node_list)
+    {
+      const double area = nodal_change[node.dofs[1]];
+      owned_multiplier[node.dofs[0]] =
+          area > 0 ? std::max(0.0, nodal_change[node.dofs[0]] / area) : 0;
+    }
+    owned_multiplier.compress(VectorOperation::insert);
+    nodal_multiplier = owned_multiplier;
+    for (const Patch &patch : patches)
+      for (unsigned int i = patch.begin; i < patch.end; ++i)
+      {
+        double pressure = 0;
+        for (unsigned int k = 0; k < points[i].shape.size(); ++k)
+          pressure +=
+              points[i].shape[k] * nodal_multiplier[patch.dofs[k * dim]];
+        points[i].lag.multiplier = std::max(0.0, pressure) * points[i].weight;
+      }
+  }
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  PotentialContact<dim>::count_points() const
+  {
+    unsigned int closed = 0;
+    for (const Point &point : points)
+      closed += point.potential.status != ContactStatus::inactive;
+    return {Utilities::MPI::sum<unsigned int>(points.size(), comm),
+            Utilities::MPI::sum(closed, comm)};
+  }
+
+  // the members defined here (PotentialContact itself is instantiated in
+  // potential_contact.cc)
+#define SOFTGRASP_INSTANTIATE(dim)                                             \
+  template void PotentialContact<dim>::make_node_points();                     \
+  template void PotentialContact<dim>::make_face_points(                       \
+      const SolidSystem<dim> &);                                               \
+  template void            PotentialContact<dim>::set_penalties();             \
+  template Eigen::Vector3d PotentialContact<dim>::position(                    \
+      const unsigned int, const TrilinosWrappers::MPI::Vector &) const;        \
+  template void PotentialContact<dim>::update_nodes(const SolidSystem<dim> &); \
+  template std::pair<unsigned int, unsigned int>                               \
+  PotentialContact<dim>::count_points() const;                                 \
+  template std::array<double, 3>                                               \
+                PotentialContact<dim>::nodal_settle_measures();                \
+  template void PotentialContact<dim>::project_multipliers();
+  SOFTGRASP_INSTANTIATE(2)
+  SOFTGRASP_INSTANTIATE(3)
+#undef SOFTGRASP_INSTANTIATE
+} // namespace softgrasp
