@@ -49,6 +49,8 @@ namespace softgrasp
       points[i].last_converged = position(i, u);
       points[i].accepted       = points[i].lag;
     }
+    if (parameters.integrate_on_faces)
+      accepted_multiplier = owned_multiplier;
     place_bodies(time, poses_converged);
     step_changes = 0;
   }
@@ -57,6 +59,8 @@ namespace softgrasp
   {
     for (auto &point : points)
       point.lag = point.accepted;
+    if (parameters.integrate_on_faces)
+      owned_multiplier = accepted_multiplier;
   }
 
   template <int dim>
@@ -180,6 +184,9 @@ namespace softgrasp
       change           = nodal[0];
       largest          = nodal[1];
       penetration      = nodal[2];
+      // Coulomb's law at the points against the projected pressure of
+      // this solve, the normal force their next solve will lag
+      excess = coulomb_excess_on_faces();
     }
     const double tolerance = parameters.settle_tolerance;
     const bool   settled   = change <= tolerance * largest + force_floor &&
@@ -335,9 +342,13 @@ namespace softgrasp
   {
     if (parameters.friction_coefficient == 0)
       return false; // nothing is lagged but the multipliers
+    if (parameters.integrate_on_faces)
+      return false; // a point's own force is not the pressure it lags
     lag_before_polish.resize(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       lag_before_polish[i] = points[i].lag;
+    if (parameters.integrate_on_faces)
+      polish_multiplier = owned_multiplier;
     polishing = true;
     return true;
   }
@@ -349,6 +360,8 @@ namespace softgrasp
       return;
     for (unsigned int i = 0; i < points.size(); ++i)
       points[i].lag = lag_before_polish[i];
+    if (parameters.integrate_on_faces)
+      owned_multiplier = polish_multiplier;
   }
 
   template <int dim> unsigned int PotentialContact<dim>::polish_after() const

@@ -96,9 +96,14 @@ namespace softgrasp
                 system.locally_relevant_dofs(),
                 comm,
                 true);
-    owned_multiplier.reinit(system.locally_owned_dofs(), comm);
-    nodal_multiplier.reinit(
-        system.locally_owned_dofs(), system.locally_relevant_dofs(), comm);
+    for (auto *v : {&owned_multiplier,
+                    &accepted_multiplier,
+                    &polish_multiplier,
+                    &projected_multiplier})
+      v->reinit(system.locally_owned_dofs(), comm);
+    for (auto *v : {&nodal_multiplier, &projected_ghosted})
+      v->reinit(
+          system.locally_owned_dofs(), system.locally_relevant_dofs(), comm);
   }
 
   template <int dim> void PotentialContact<dim>::set_penalties()
@@ -218,41 +223,47 @@ namespace softgrasp
   template <int dim>
   std::array<double, 3> PotentialContact<dim>::nodal_settle_measures()
   {
-    // per node, component 0 and 1: the change and the force; of nodal_gap:
-    // sum_q N_k w_q g_q and sum_q N_k w_q
+    // per node, of nodal_change: sum_q N_k lambda_q and D_k = sum_q N_k w_q;
+    // of nodal_gap: sum_q N_k w_q g_q
     nodal_change = 0;
     nodal_gap    = 0;
     for (const Patch &patch : patches)
       for (unsigned int i = patch.begin; i < patch.end; ++i)
       {
-        const Point &point  = points[i];
-        const double lambda = point.potential.normal_force;
-        const double lagged = point.lag.normal_force;
-        double       gap    = std::min(point.nearest_gap, point.spacing);
+        const Point &point = points[i];
+        double       gap   = std::min(point.nearest_gap, point.spacing);
         if (point.proximity.body >= 0)
           gap = std::min(gap, point.proximity.gap);
         for (unsigned int k = 0; k < point.shape.size(); ++k)
         {
           const double N = point.shape[k];
-          nodal_change[patch.dofs[k * dim]] += N * (lambda - lagged);
-          nodal_change[patch.dofs[k * dim + 1]] += N * lambda;
+          nodal_change[patch.dofs[k * dim]] += N * point.potential.normal_force;
+          nodal_change[patch.dofs[k * dim + 1]] += N * point.weight;
           nodal_gap[patch.dofs[k * dim]] += N * point.weight * gap;
-          nodal_gap[patch.dofs[k * dim + 1]] += N * point.weight;
         }
       }
     nodal_change.compress(VectorOperation::add);
     nodal_gap.compress(VectorOperation::add);
+    // Lambda_k = max(0, sum_q N_k lambda_q / D_k) against the multiplier of
+    // the solve, as forces D_k Lambda_k
     double change = 0, largest = 0, penetration = 0;
+    projected_multiplier = 0;
     for (const Node &node : node_list)
     {
-      const double area    = nodal_gap[node.dofs[1]];
+      const double area    = nodal_change[node.dofs[1]];
       const double spacing = std::pow(node.reference_area, 1.0 / (dim - 1.0));
-      change  = std::max(change, std::abs(nodal_change[node.dofs[0]]));
-      largest = std::max<double>(largest, nodal_change[node.dofs[1]]);
-      if (area > 0)
-        penetration =
-            std::max(penetration, -nodal_gap[node.dofs[0]] / area / spacing);
+      if (!(area > 0))
+        continue;
+      const double Lambda =
+          std::max(0.0, nodal_change[node.dofs[0]] / area); // Pa
+      projected_multiplier[node.dofs[0]] = Lambda;
+      change                             = std::max(
+          change, area * std::abs(Lambda - owned_multiplier[node.dofs[0]]));
+      largest = std::max(largest, area * Lambda);
+      penetration =
+          std::max(penetration, -nodal_gap[node.dofs[0]] / area / spacing);
     }
+    projected_multiplier.compress(VectorOperation::insert);
     return {{Utilities::MPI::max(change, comm),
              Utilities::MPI::max(largest, comm),
              Utilities::MPI::max(penetration, comm)}};
@@ -260,36 +271,51 @@ namespace softgrasp
 
   template <int dim> void PotentialContact<dim>::project_multipliers()
   {
-    // component 0 of a node: sum_q N_k lambda_q, component 1: sum_q N_k w_q
-    nodal_change = 0;
-    for (const Patch &patch : patches)
-      for (unsigned int i = patch.begin; i < patch.end; ++i)
-        for (unsigned int k = 0; k < points[i].shape.size(); ++k)
-        {
-          const double N = points[i].shape[k];
-          nodal_change[patch.dofs[k * dim]] +=
-              N * points[i].potential.normal_force;
-          nodal_change[patch.dofs[k * dim + 1]] += N * points[i].weight;
-        }
-    nodal_change.compress(VectorOperation::add);
-    owned_multiplier = 0;
-    for (const Node &node : node_list)
-    {
-      const double area = nodal_change[node.dofs[1]];
-      owned_multiplier[node.dofs[0]] =
-          area > 0 ? std::max(0.0, nodal_change[node.dofs[0]] / area) : 0;
-    }
-    owned_multiplier.compress(VectorOperation::insert);
+    owned_multiplier = projected_multiplier;
     nodal_multiplier = owned_multiplier;
     for (const Patch &patch : patches)
       for (unsigned int i = patch.begin; i < patch.end; ++i)
       {
+        Point &point    = points[i];
         double pressure = 0;
-        for (unsigned int k = 0; k < points[i].shape.size(); ++k)
-          pressure +=
-              points[i].shape[k] * nodal_multiplier[patch.dofs[k * dim]];
-        points[i].lag.multiplier = std::max(0.0, pressure) * points[i].weight;
+        for (unsigned int k = 0; k < point.shape.size(); ++k)
+          pressure += point.shape[k] * nodal_multiplier[patch.dofs[k * dim]];
+        Lag &lag       = point.lag;
+        lag.multiplier = std::max(0.0, pressure) * point.weight;
+        // friction against the same smooth pressure: the points' own
+        // forces flip where their gap is near zero
+        lag.normal_force = point.proximity.body >= 0 ? lag.multiplier : 0;
+        if (lag.normal_force > 0)
+        {
+          lag.normal = point.proximity.normal;
+          lag.body   = point.proximity.body;
+          lag.geom   = point.proximity.geom;
+        }
+        else
+          lag.body = -1;
       }
+  }
+
+  template <int dim> double PotentialContact<dim>::coulomb_excess_on_faces()
+  {
+    projected_ghosted   = projected_multiplier;
+    const double mu     = parameters.friction_coefficient;
+    double       beyond = 0, largest = 0;
+    for (const Patch &patch : patches)
+      for (unsigned int i = patch.begin; i < patch.end; ++i)
+      {
+        const Point &point    = points[i];
+        double       pressure = 0;
+        for (unsigned int k = 0; k < point.shape.size(); ++k)
+          pressure += point.shape[k] * projected_ghosted[patch.dofs[k * dim]];
+        const double normal_force = std::max(0.0, pressure) * point.weight;
+        largest                   = std::max(largest, normal_force);
+        beyond                    = std::max(beyond,
+                          point.potential.friction.norm() - mu * normal_force);
+      }
+    beyond  = Utilities::MPI::max(beyond, comm);
+    largest = Utilities::MPI::max(largest, comm);
+    return mu * largest > 0 ? std::max(0.0, beyond) / (mu * largest) : 0;
   }
 
   template <int dim>
@@ -298,7 +324,7 @@ namespace softgrasp
   {
     unsigned int closed = 0;
     for (const Point &point : points)
-      closed += point.potential.status != ContactStatus::inactive;
+      closed += point.potential.normal_force > 0;
     return {Utilities::MPI::sum<unsigned int>(points.size(), comm),
             Utilities::MPI::sum(closed, comm)};
   }
@@ -316,8 +342,9 @@ namespace softgrasp
   template std::pair<unsigned int, unsigned int>                               \
   PotentialContact<dim>::count_points() const;                                 \
   template std::array<double, 3>                                               \
-                PotentialContact<dim>::nodal_settle_measures();                \
-  template void PotentialContact<dim>::project_multipliers();
+                  PotentialContact<dim>::nodal_settle_measures();              \
+  template void   PotentialContact<dim>::project_multipliers();                \
+  template double PotentialContact<dim>::coulomb_excess_on_faces();
   SOFTGRASP_INSTANTIATE(2)
   SOFTGRASP_INSTANTIATE(3)
 #undef SOFTGRASP_INSTANTIATE

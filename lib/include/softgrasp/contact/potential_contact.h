@@ -86,7 +86,8 @@ namespace softgrasp
     describe_node(const dealii::types::global_dof_index dof) const override;
 
     /// The global numbers of points of the potential (nodes or face Gauss
-    /// points) and of those closed at the last evaluation. Collective.
+    /// points) and of those pressed (normal force > 0) at the last
+    /// evaluation. Collective.
     std::pair<unsigned int, unsigned int> count_points() const;
 
   private:
@@ -161,23 +162,29 @@ namespace softgrasp
     /// potentials (the force on face points summed over the faces of all
     /// ranks); the free dofs.
     void update_nodes(const SolidSystem<dim> &system);
-    /// Face mode: the largest change of a node's normal force against the
-    /// lag, sum_q N_k (lambda_q - lambda^k_q) (N), the largest normal
-    /// force sum_q N_k lambda_q (N), and the deepest weighted penetration
-    /// -sum_q N_k w_q g_q / sum_q N_k w_q over the node spacing (1; the
-    /// gaps capped at the spacing). Collective.
+    /// Face mode: the projected multipliers Lambda_k = max(0, sum_q N_k
+    /// lambda_q / D_k), D_k = sum_q N_k w_q, into projected_multiplier, and
+    /// the largest change of the nodal force D_k Lambda_k against the solve's
+    /// multipliers (N), the largest such force (N), and the deepest weighted
+    /// penetration -sum_q N_k w_q g_q / D_k over the node spacing (1; gaps
+    /// capped at the spacing). Collective.
     std::array<double, 3> nodal_settle_measures();
     /**
      * Face mode, the Uzawa update: the multiplier field lives on the nodes,
-     * Lambda_k = max(0, sum_q N_k lambda_q / sum_q N_k w_q), the point
-     * forces projected onto the nodal basis, and each point's multiplier is
-     * w_q sum_k N_k Lambda_k. Where the contact is closed the step then
-     * converges to zero weighted gaps int N_k g dA = 0 (the mortar
-     * condition: as many as there are nodes), not to a zero gap at every
-     * Gauss point, which the nodes cannot meet and which would let the
-     * multipliers gather on a few points and stiffen the surface.
+     * Lambda = projected_multiplier (nodal_settle_measures()), and each
+     * point's multiplier and lagged normal force are w_q sum_k N_k Lambda_k.
+     * Where the contact is closed the step then converges to zero weighted
+     * gaps int N_k g dA = 0 (the mortar condition: as many as there are
+     * nodes), not to a zero gap at every Gauss point, which the nodes cannot
+     * meet and which would let the multipliers gather on a few points and
+     * stiffen the surface.
      */
     void project_multipliers();
+    /// Face mode, after nodal_settle_measures(): max_q (|f_t,q| - mu w_q
+    /// sum_k N_k Lambda_k) over the points, Lambda the projected
+    /// multipliers, relative to mu times the largest point force
+    /// w_q sum_k N_k Lambda_k (coulomb_excess()). Collective.
+    double coulomb_excess_on_faces();
 
     /**
      * The geom point @p i at @p x (m) acts with: the nearest, or the
@@ -204,6 +211,11 @@ namespace softgrasp
     /// Face mode: Lambda_k (Pa) in component 0 of each node, owned and
     /// ghosted.
     dealii::TrilinosWrappers::MPI::Vector owned_multiplier, nodal_multiplier;
+    /// Face mode: Lambda of the last converged step, before the polish, and
+    /// projected from the last solve (owned).
+    dealii::TrilinosWrappers::MPI::Vector accepted_multiplier,
+        polish_multiplier, projected_multiplier;
+    dealii::TrilinosWrappers::MPI::Vector projected_ghosted; ///< ghosted
     double                                total_energy = 0;
     /// Normal-force changes below this are round-off (N): 1e-8 of the
     /// largest k h (settle()).
