@@ -17,7 +17,8 @@ namespace softgrasp_tests
 {
   /// examples/frictional_drag/deep_drag_3d.prm with the quadratic
   /// volumetric energy (CalculiX's NEO HOOKE) on mesh A (20 x 8 cells of
-  /// 4 mm, a 12 mm zone of 3 cells under the top), output to @p directory,
+  /// 4 mm, a 12 mm zone of 3 cells under the top) and the node-wise
+  /// potential (the example's is on faces), output to @p directory,
   /// followed by @p overrides.
   inline std::string deep_drag_mesh_a(const std::string &directory,
                                       const std::string &overrides)
@@ -30,6 +31,8 @@ namespace softgrasp_tests
         "subsection Mesh\n subsection Block\n  set Subdivisions = 20, 8, 3\n"
         "  set Grading = 1, 1, 1.3\n"
         "  set Fine zone = -0.04, 0, -0.012; 0.04, 0.03, 0\n end\nend\n"
+        "subsection Contact\n set Potential integration = nodes\n"
+        " set Penalty factor = 100\nend\n"
         "subsection Output\n set Directory = " +
             directory + "\n set VTU interval = 0\n set Verbose = false\nend\n" +
             overrides);

@@ -2,7 +2,8 @@
 // capsule pressed 10 mm into a thick block and dragged 20 mm with mu = 0.5
 // on the incremental potential), read from its file: its first 2 mm of
 // press (the whole run takes about 10 minutes) with friction on the
-// potential against the Lagrange multipliers on the same file:
+// potential against the Lagrange multipliers on the same file (both
+// node-wise: the multipliers have no face mode):
 //  - the file parses and runs, the capsule presses (closed nodes, a normal
 //    force), every step settles with Coulomb's law against the current
 //    normal forces (excess at most 1e-3) and the potential never rose;
@@ -21,6 +22,7 @@ namespace
     auto run = make_solver<3>(problem_text(
         EXAMPLE_DIR "/frictional_drag/deep_drag_3d.prm",
         "subsection Contact\n set Enforcement = " + enforcement +
+            "\n set Potential integration = nodes\n set Penalty factor = 100"
             "\nend\n"
             "subsection Time\n set End time = 0.1\n set Time step = 0.05\n"
             "end\n"
