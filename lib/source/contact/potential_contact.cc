@@ -200,23 +200,28 @@ namespace softgrasp
     report = line.str();
     if (settled)
       return true;
-    for (Point &point : points)
-    {
-      Lag &lag         = point.lag;
-      lag.multiplier   = point.potential.normal_force; // Uzawa
-      lag.normal_force = point.potential.normal_force;
-      if (lag.normal_force > 0)
-      {
-        lag.normal = point.proximity.normal;
-        lag.body   = point.proximity.body;
-        lag.geom   = point.proximity.geom;
-      }
-      else
-        lag.body = -1;
-    }
     if (parameters.integrate_on_faces)
       project_multipliers();
+    else
+      for (Point &point : points) // Uzawa
+        lag_at(point, point.potential.normal_force);
     return false;
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::lag_at(Point &point, const double normal_force)
+  {
+    Lag &lag         = point.lag;
+    lag.multiplier   = normal_force;
+    lag.normal_force = point.proximity.body >= 0 ? normal_force : 0;
+    if (lag.normal_force > 0)
+    {
+      lag.normal = point.proximity.normal;
+      lag.body   = point.proximity.body;
+      lag.geom   = point.proximity.geom;
+    }
+    else
+      lag.body = -1;
   }
 
   template <int dim>

@@ -137,33 +137,8 @@ namespace softgrasp
     return x;
   }
 
-  template <int dim>
-  void PotentialContact<dim>::update_nodes(const SolidSystem<dim> &system)
+  template <int dim> void PotentialContact<dim>::gather_face_points()
   {
-    const auto &constraints = system.constraint_set();
-    for (Patch &patch : patches)
-      for (unsigned int r = 0; r < patch.dofs.size(); ++r)
-        patch.free[r] = !constraints.is_constrained(patch.dofs[r]);
-    for (Node &node : node_list)
-      for (unsigned int c = 0; c < dim; ++c)
-        node.free[c] = !constraints.is_constrained(node.dofs[c]);
-    if (!parameters.integrate_on_faces)
-    {
-      for (unsigned int j = 0; j < node_list.size(); ++j)
-      {
-        Node            &node  = node_list[j];
-        const Point     &point = points[j];
-        const Proximity &p     = point.proximity;
-        node.status            = point.potential.status;
-        node.body              = p.body;
-        node.geom              = p.geom;
-        node.gap               = p.gap;
-        node.normal = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
-        node.force  = point.potential.force;
-        node.slip   = point.potential.slip;
-      }
-      return;
-    }
     // the force on node k is sum_q N_k(x_q) f_q; its slip the mean of its
     // closed points' slips, weighted by |N_k| w_q; it slips when most of
     // that weight does
@@ -192,6 +167,36 @@ namespace softgrasp
       }
     for (auto *v : {&nodal_force, &nodal_slip, &nodal_weight})
       v->compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void PotentialContact<dim>::update_nodes(const SolidSystem<dim> &system)
+  {
+    const auto &constraints = system.constraint_set();
+    for (Patch &patch : patches)
+      for (unsigned int r = 0; r < patch.dofs.size(); ++r)
+        patch.free[r] = !constraints.is_constrained(patch.dofs[r]);
+    for (Node &node : node_list)
+      for (unsigned int c = 0; c < dim; ++c)
+        node.free[c] = !constraints.is_constrained(node.dofs[c]);
+    if (!parameters.integrate_on_faces)
+    {
+      for (unsigned int j = 0; j < node_list.size(); ++j)
+      {
+        Node            &node  = node_list[j];
+        const Point     &point = points[j];
+        const Proximity &p     = point.proximity;
+        node.status            = point.potential.status;
+        node.body              = p.body;
+        node.geom              = p.geom;
+        node.gap               = p.gap;
+        node.normal = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
+        node.force  = point.potential.force;
+        node.slip   = point.potential.slip;
+      }
+      return;
+    }
+    gather_face_points();
     // the geom and gap a node reports are those of its own position
     // (a node between two links reports its face points' forces to the
     // nearer one)
@@ -280,19 +285,9 @@ namespace softgrasp
         double pressure = 0;
         for (unsigned int k = 0; k < point.shape.size(); ++k)
           pressure += point.shape[k] * nodal_multiplier[patch.dofs[k * dim]];
-        Lag &lag       = point.lag;
-        lag.multiplier = std::max(0.0, pressure) * point.weight;
         // friction against the same smooth pressure: the points' own
         // forces flip where their gap is near zero
-        lag.normal_force = point.proximity.body >= 0 ? lag.multiplier : 0;
-        if (lag.normal_force > 0)
-        {
-          lag.normal = point.proximity.normal;
-          lag.body   = point.proximity.body;
-          lag.geom   = point.proximity.geom;
-        }
-        else
-          lag.body = -1;
+        lag_at(point, std::max(0.0, pressure) * point.weight);
       }
   }
 
@@ -339,6 +334,7 @@ namespace softgrasp
   template Eigen::Vector3d PotentialContact<dim>::position(                    \
       const unsigned int, const TrilinosWrappers::MPI::Vector &) const;        \
   template void PotentialContact<dim>::update_nodes(const SolidSystem<dim> &); \
+  template void PotentialContact<dim>::gather_face_points();                   \
   template std::pair<unsigned int, unsigned int>                               \
   PotentialContact<dim>::count_points() const;                                 \
   template std::array<double, 3>                                               \

@@ -162,6 +162,10 @@ namespace softgrasp
     /// potentials (the force on face points summed over the faces of all
     /// ranks); the free dofs.
     void update_nodes(const SolidSystem<dim> &system);
+    /// Face mode: sum the points' forces (N_k f_q), slips and closed
+    /// weights onto the nodes (nodal_force, nodal_slip, nodal_weight; over
+    /// all ranks). Collective.
+    void gather_face_points();
     /// Face mode: the projected multipliers Lambda_k = max(0, sum_q N_k
     /// lambda_q / D_k), D_k = sum_q N_k w_q, into projected_multiplier, and
     /// the largest change of the nodal force D_k Lambda_k against the solve's
@@ -180,6 +184,9 @@ namespace softgrasp
      * stiffen the surface.
      */
     void project_multipliers();
+    /// Set @p point's multiplier and lagged normal force to @p normal_force
+    /// (N; the latter 0 away from any geom), its frame to its current normal.
+    void lag_at(Point &point, const double normal_force);
     /// Face mode, after nodal_settle_measures(): max_q (|f_t,q| - mu w_q
     /// sum_k N_k Lambda_k) over the points, Lambda the projected
     /// multipliers, relative to mu times the largest point force
