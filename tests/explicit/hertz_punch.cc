@@ -17,11 +17,17 @@ using namespace softgrasp_tests;
 
 namespace
 {
-  std::string punch_prm(const std::string &integrator)
+  std::string punch_prm(const std::string &integrator,
+                        const std::string &integration = "nodes")
   {
     const double       depth = 2e-4, T = 0.25;
     std::ostringstream s;
-    s << hertz_prm(8, 1.5, 0.01, 1, 10, "output-punch-" + integrator)
+    s << hertz_prm(8,
+                   1.5,
+                   0.01,
+                   1,
+                   10,
+                   "output-punch-" + integrator + "-" + integration)
       << "subsection Rigid bodies\n subsection Body indenter\n"
       << "  set Trajectory = " << cosine_ramp_trajectory(depth, T)
       << "\n end\nend\n"
@@ -31,7 +37,13 @@ namespace
       << "\nend\n"
       << "subsection Finite element\n set Formulation = displacement\nend\n"
       << "subsection Explicit dynamics\n set Mass damping = 200\n"
-      << " set Mass scaling time step = 4e-5\nend\n";
+      << " set Mass scaling time step = 4e-5\nend\n"
+      << "subsection Contact\n set Potential integration = " << integration
+      << (integration == "faces" && integrator == "implicit"
+              ? "\n set Enforcement = incremental potential\n"
+                " set Penalty factor = 1000"
+              : "")
+      << "\nend\n";
     return s.str();
   }
 } // namespace
@@ -41,45 +53,56 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(3);
-  auto implicit_solver = make_solver<3>(punch_prm("implicit"));
-  implicit_solver->run();
-  auto explicit_solver = make_solver<3>(punch_prm("explicit"));
-  explicit_solver->run();
-
-  const auto       &hi = implicit_solver->contact_history();
-  const auto       &he = explicit_solver->contact_history();
-  const std::string F  = "indenter/ball:normal_force";
-  SG_CHECK(hi.rows.size() == he.rows.size(), "the same recorded times");
-  double worst = 0;
-  for (std::size_t row = 1; row < hi.rows.size(); ++row)
+  // node-wise, then the weighted gaps of the faces (the penetration is then
+  // that of the weighted gap, within the sweeps' tolerance of 1e-9 of the
+  // model's size)
+  for (const std::string integration : {"nodes", "faces"})
   {
-    const double t = hi.value(row, "time");
-    SG_CHECK_CLOSE(he.value(row, "time"), t, 1e-12, 0, "same times");
-    const double implicit_force = 4 * hi.value(row, F);
-    const double explicit_force = 4 * he.value(row, F);
-    const double difference     = explicit_force / implicit_force - 1;
-    dealii::deallog << "t = " << t << " s: implicit " << implicit_force
-                    << " N, explicit " << explicit_force << " N" << std::endl;
-    if (row >= hi.rows.size() / 2)
-      worst = std::max(worst, std::abs(difference));
-  }
-  dealii::deallog << "explicit within 2 % of implicit from d/2 on: "
-                  << (worst < 0.02) << std::endl;
-  SG_CHECK(worst < 0.02, "explicit and implicit agree within 2 %");
+    auto implicit_solver = make_solver<3>(punch_prm("implicit", integration));
+    implicit_solver->run();
+    const auto &hi       = implicit_solver->contact_history();
+    auto explicit_solver = make_solver<3>(punch_prm("explicit", integration));
+    explicit_solver->run();
+    const auto       &he = explicit_solver->contact_history();
+    const std::string F  = "indenter/ball:normal_force";
+    SG_CHECK(hi.rows.size() == he.rows.size(), "the same recorded times");
+    double worst = 0;
+    for (std::size_t row = 1; row < hi.rows.size(); ++row)
+    {
+      const double t = hi.value(row, "time");
+      SG_CHECK_CLOSE(he.value(row, "time"), t, 1e-12, 0, "same times");
+      const double implicit_force = 4 * hi.value(row, F);
+      const double explicit_force = 4 * he.value(row, F);
+      const double difference     = explicit_force / implicit_force - 1;
+      dealii::deallog << integration << ", t = " << t << " s: implicit "
+                      << implicit_force << " N, explicit " << explicit_force
+                      << " N" << std::endl;
+      if (row >= hi.rows.size() / 2)
+        worst = std::max(worst, std::abs(difference));
+    }
+    std::cout << integration << ": largest difference from d/2 on "
+              << 100 * worst << " %" << std::endl;
+    dealii::deallog << integration
+                    << ": explicit within 2 % of implicit from d/2 on: "
+                    << (worst < 0.02) << std::endl;
+    SG_CHECK(worst < 0.02, "explicit and implicit agree within 2 %");
 
-  const auto &history = explicit_solver->history();
-  double      balance = 0, penetration = 0;
-  for (std::size_t row = 1; row < history.rows.size(); ++row)
-  {
-    balance     = std::max(balance, history.value(row, "energy_balance_error"));
-    penetration = std::max(penetration, history.value(row, "max_penetration"));
+    const auto &history = explicit_solver->history();
+    double      balance = 0, penetration = 0;
+    for (std::size_t row = 1; row < history.rows.size(); ++row)
+    {
+      balance = std::max(balance, history.value(row, "energy_balance_error"));
+      penetration =
+          std::max(penetration, history.value(row, "max_penetration"));
+    }
+    const double      allowed = integration == "nodes" ? 1e-12 : 1e-11;
+    const std::size_t last    = history.rows.size() - 1;
+    dealii::deallog << "added mass "
+                    << history.value(last, "added_mass_percent") << " %"
+                    << ", energy balance within 1 %: " << (balance < 0.01)
+                    << ", penetration below " << allowed
+                    << " m: " << (penetration < allowed) << std::endl;
+    SG_CHECK(balance < 0.01, "energy balance within 1 %");
+    SG_CHECK(penetration < allowed, "no penetration after any step");
   }
-  const std::size_t last = history.rows.size() - 1;
-  dealii::deallog << "added mass " << history.value(last, "added_mass_percent")
-                  << " %"
-                  << ", energy balance within 1 %: " << (balance < 0.01)
-                  << ", penetration below 1e-12 m: " << (penetration < 1e-12)
-                  << std::endl;
-  SG_CHECK(balance < 0.01, "energy balance within 1 %");
-  SG_CHECK(penetration < 1e-12, "no penetration after any step");
 }

@@ -142,7 +142,10 @@ namespace softgrasp
         "no fold on the deep drag); about 9 to 16 times the points, the "
         "same unknowns. With 'faces' use 'Penalty factor = 1000': at 100 "
         "the weighted penetration stays near 1e-3 of the spacing and steps "
-        "are accepted unsettled (doc/contact.md). "
+        "are accepted unsettled (doc/contact.md). The explicit integrator "
+        "reads it too: 'faces' enforces there the gap integrated over the "
+        "faces against dual mortar multipliers (weighted gaps, pressures on "
+        "the nodes; friction node-wise) instead of the gap at each node. "
         "Unit: none.");
     prm.leave_subsection();
   }

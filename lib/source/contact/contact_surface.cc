@@ -84,6 +84,52 @@ namespace softgrasp
   }
 
   template <int dim>
+  std::vector<typename ContactSurface<dim>::SlaveFace>
+  ContactSurface<dim>::slave_faces(const SolidSystem<dim> &system) const
+  {
+    const auto                          &fe = system.fe();
+    FEFaceValues<dim>                    face_values(system.mapping(),
+                                  fe,
+                                  QGauss<dim - 1>(fe.degree + 2),
+                                  update_values | update_JxW_values |
+                                      update_quadrature_points);
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    std::vector<SlaveFace>               faces;
+    for (const auto &cell : system.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+        {
+          if (!on_slave(cell, f))
+            continue;
+          face_values.reinit(cell, f);
+          cell->get_dof_indices(indices);
+          SlaveFace                 face;
+          std::vector<unsigned int> on_face; // support points of the face
+          for (unsigned int k = 0; k < cell_nodes.size(); ++k)
+            if (fe.has_support_on_face(cell_nodes[k][0], f))
+            {
+              on_face.push_back(k);
+              for (unsigned int c = 0; c < dim; ++c)
+                face.dofs.push_back(indices[cell_nodes[k][c]]);
+            }
+          for (const auto q : face_values.quadrature_point_indices())
+          {
+            std::vector<double> shape;
+            for (const unsigned int k : on_face)
+              shape.push_back(face_values.shape_value(cell_nodes[k][0], q));
+            face.shape.push_back(shape);
+            face.weight.push_back(face_values.JxW(q));
+            Eigen::Vector3d X = Eigen::Vector3d::Zero();
+            for (unsigned int d = 0; d < dim; ++d)
+              X[d] = face_values.quadrature_point(q)[d];
+            face.position.push_back(X);
+          }
+          faces.push_back(face);
+        }
+    return faces;
+  }
+
+  template <int dim>
   void
   ContactSurface<dim>::collect_nodes(const SolidSystem<dim> &system,
                                      const TrilinosWrappers::MPI::Vector &area)

@@ -38,58 +38,34 @@ namespace softgrasp
   template <int dim>
   void PotentialContact<dim>::make_face_points(const SolidSystem<dim> &system)
   {
-    const auto                          &fe = system.fe();
-    FEFaceValues<dim>                    face_values(system.mapping(),
-                                  fe,
-                                  QGauss<dim - 1>(fe.degree + 2),
-                                  update_values | update_JxW_values |
-                                      update_quadrature_points);
-    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    const unsigned int degree = std::max(1u, system.fe().degree);
     points.clear();
     patches.clear();
-    for (const auto &cell : system.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-        {
-          if (!cell->face(f)->at_boundary() ||
-              !this->is_slave_boundary(cell->face(f)->boundary_id()))
-            continue;
-          face_values.reinit(cell, f);
-          cell->get_dof_indices(indices);
-          Patch                     patch;
-          std::vector<unsigned int> on_face; // support points of the face
-          for (unsigned int k = 0; k < cell_nodes.size(); ++k)
-            if (fe.has_support_on_face(cell_nodes[k][0], f))
-            {
-              on_face.push_back(k);
-              for (unsigned int c = 0; c < dim; ++c)
-                patch.dofs.push_back(indices[cell_nodes[k][c]]);
-            }
-          patch.free.assign(patch.dofs.size(), true);
-          patch.begin = points.size();
-          double area = 0;
-          for (const auto q : face_values.quadrature_point_indices())
-            area += face_values.JxW(q);
-          // the spacing of the face's nodes, as a node's in the node mode
-          const double spacing =
-              std::pow(area, 1.0 / (dim - 1.0)) / std::max(1u, fe.degree);
-          for (const auto q : face_values.quadrature_point_indices())
-          {
-            Point point;
-            point.patch = patches.size();
-            for (const unsigned int k : on_face)
-              point.shape.push_back(
-                  face_values.shape_value(cell_nodes[k][0], q));
-            for (unsigned int d = 0; d < dim; ++d)
-              point.reference_position[d] = face_values.quadrature_point(q)[d];
-            point.last_converged = point.reference_position;
-            point.weight         = face_values.JxW(q);
-            point.spacing        = spacing;
-            points.push_back(point);
-          }
-          patch.end = points.size();
-          patches.push_back(patch);
-        }
+    for (const auto &face : this->slave_faces(system))
+    {
+      Patch patch;
+      patch.dofs = face.dofs;
+      patch.free.assign(patch.dofs.size(), true);
+      patch.begin = points.size();
+      double area = 0;
+      for (const double w : face.weight)
+        area += w;
+      // the spacing of the face's nodes, as a node's in the node mode
+      const double spacing = std::pow(area, 1.0 / (dim - 1.0)) / degree;
+      for (unsigned int q = 0; q < face.weight.size(); ++q)
+      {
+        Point point;
+        point.patch              = patches.size();
+        point.shape              = face.shape[q];
+        point.reference_position = face.position[q];
+        point.last_converged     = point.reference_position;
+        point.weight             = face.weight[q];
+        point.spacing            = spacing;
+        points.push_back(point);
+      }
+      patch.end = points.size();
+      patches.push_back(patch);
+    }
     for (auto *v :
          {&nodal_force, &nodal_slip, &nodal_weight, &nodal_change, &nodal_gap})
       v->reinit(system.locally_owned_dofs(),

@@ -1,3 +1,4 @@
+#include <deal.II/lac/vector.h>
 #include <softgrasp/explicit/explicit_contact.h>
 
 namespace softgrasp
@@ -23,6 +24,37 @@ namespace softgrasp
         node.free[c] = !constraints.is_constrained(node.dofs[c]);
     tolerance = 1e-12 * system.length_scale();
     poses_now.clear();
+    faces.clear();
+    sweeps = 0;
+    if (!parameters.integrate_on_faces)
+      return;
+    gap_cap = system.length_scale();
+    for (auto &face : this->slave_faces(system))
+    {
+      // the face's mass matrix M_kl = sum_q w_q N_k N_l and A = D M^-1
+      const unsigned int n = face.dofs.size() / dim;
+      FullMatrix<double> mass(n, n);
+      for (unsigned int q = 0; q < face.weight.size(); ++q)
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int l = 0; l < n; ++l)
+            mass(k, l) += face.weight[q] * face.shape[q][k] * face.shape[q][l];
+      Vector<double> row_sums(n);
+      for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int l = 0; l < n; ++l)
+          row_sums[k] += mass(k, l);
+      mass.gauss_jordan();
+      DualFace dual_face;
+      dual_face.dual.reinit(n, n);
+      for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int l = 0; l < n; ++l)
+          dual_face.dual(k, l) = row_sums[k] * mass(k, l);
+      dual_face.gap.assign(face.weight.size(), 0.0);
+      dual_face.normal.assign(face.weight.size(), Eigen::Vector3d::Zero());
+      dual_face.face = std::move(face);
+      faces.push_back(std::move(dual_face));
+    }
+    // the vectors take the integrator's layout at the first enforce()
+    weighted_gap.reinit(0);
   }
 
   template <int dim>
@@ -116,6 +148,11 @@ namespace softgrasp
                             ? 1.0 - double(steps_done + 1) / relaxation
                             : 0.0;
     ++steps_done;
+    if (parameters.integrate_on_faces)
+    {
+      enforce_on_faces(dt, h, mass, u_old, left, u);
+      return;
+    }
     for (unsigned int j = 0; j < node_list.size(); ++j)
     {
       auto           &node    = node_list[j];
@@ -174,6 +211,11 @@ namespace softgrasp
   template <int dim> double ExplicitContact<dim>::max_penetration() const
   {
     return penetration;
+  }
+
+  template <int dim> unsigned int ExplicitContact<dim>::last_sweeps() const
+  {
+    return sweeps;
   }
 
   template class ExplicitContact<2>;

@@ -54,7 +54,9 @@ namespace softgrasp
     /// Incremental potential: where its contact terms are evaluated on the
     /// slave surface: at the nodes, each weighted by its area (false), or
     /// at the Gauss points of each slave face, the gap interpolated
-    /// between the nodes (true; 'Potential integration = faces').
+    /// between the nodes (true; 'Potential integration = faces'). The
+    /// explicit integrator's contact then enforces dual mortar weighted
+    /// gaps of the faces instead of the nodes' gaps.
     bool integrate_on_faces = false;
 
     static void declare_parameters(dealii::ParameterHandler &prm);

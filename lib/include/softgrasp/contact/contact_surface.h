@@ -119,6 +119,22 @@ namespace softgrasp
       double          gap    = std::numeric_limits<double>::infinity(); ///< m
       Eigen::Vector3d normal = Eigen::Vector3d::Zero();
     };
+    /**
+     * One slave face of a locally owned cell and its Gauss points (degree
+     * + 2 per direction): the global dofs of the face's support points
+     * ([k * dim + c]), the shape values N_k at each point ([q][k]), the
+     * reference JxW (m^2; m in 2D) and the reference positions (m).
+     */
+    struct SlaveFace
+    {
+      std::vector<dealii::types::global_dof_index> dofs;
+      std::vector<std::vector<double>>             shape;
+      std::vector<double>                          weight;
+      std::vector<Eigen::Vector3d>                 position;
+    };
+    /// The slave faces of the locally owned cells of @p system.
+    std::vector<SlaveFace> slave_faces(const SolidSystem<dim> &system) const;
+
     /// The nearest geom to @p x (m) in the poses of poses_now.
     Proximity nearest(const Eigen::Vector3d &x) const;
     /// Signed distance and normal of geom (p.body, p.geom) at @p x.

@@ -2,6 +2,7 @@
 #define softgrasp_explicit_explicit_contact_h
 
 #include <deal.II/base/timer.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <softgrasp/contact/contact_surface.h>
 
@@ -30,6 +31,19 @@ namespace softgrasp
    *
    * Components fixed by Dirichlet conditions (symmetry planes) are not
    * moved: the correction is made in the free subspace.
+   *
+   * 'Contact/Potential integration = faces' enforces the gap integrated
+   * over the slave faces instead of at the nodes, so that a rigid edge
+   * cannot push in between the nodes (as the implicit solvers' face mode):
+   * with dual mortar multipliers (Wohlmuth 2000; Popp et al. 2010) psi_k,
+   * biorthogonal to the shape functions on each face (int psi_k N_l dA =
+   * delta_kl D_k), the weighted gaps G_k = int psi_k g dA >= 0 of the nodes
+   * are the constraints, with the normal pressure Lambda_k >= 0 on each
+   * node and the traction t = sum_k psi_k Lambda_k n on the faces.
+   * Biorthogonality makes the step's multiplier equations node-local to
+   * first order (dG_k/dLambda_k = D_k^2 dt h / m_k on a flat surface), so
+   * a few projected Jacobi sweeps solve them (enforce_on_faces()). Coulomb
+   * friction stays node-wise, bounded by mu times the node's normal force.
    */
   template <int dim> class ExplicitContact : public ContactSurface<dim>
   {
@@ -76,6 +90,9 @@ namespace softgrasp
     /// enforce(), on all ranks.
     double max_penetration() const;
 
+    /// Face mode: the Jacobi sweeps of the last enforce() (0 in node mode).
+    unsigned int last_sweeps() const;
+
   private:
     using Proximity = typename ContactSurface<dim>::Proximity;
     using ContactSurface<dim>::node_list;
@@ -108,6 +125,47 @@ namespace softgrasp
                  const double           k,
                  const double           allowed,
                  Eigen::Vector3d       &x) const;
+
+    /**
+     * Face mode (enforce() with 'Potential integration = faces'): the
+     * projected Jacobi sweeps on the nodal pressures until every weighted
+     * gap meets its constraint within the tolerance (at most
+     * max_sweeps), with the friction of each node against its normal
+     * force. The overlaps still allowed are @p left times the allowance.
+     * Collective.
+     */
+    void enforce_on_faces(const double      dt,
+                          const double      h,
+                          const VectorType &mass,
+                          const VectorType &u_old,
+                          const double      left,
+                          VectorType       &u);
+    /// Face mode: G_k = int psi_k g dA into weighted_gap (owned, summed
+    /// over the ranks), with each Gauss point's normal, for @p u (ghosted).
+    void weighted_gaps(const VectorType &u);
+    /// Face mode: the nodes' normal forces sum_q w_q N_k t_q n_q from the
+    /// pressures (multiplier, ghosted) into face_force (owned, summed).
+    void normal_forces();
+
+    /// Face mode: a slave face with its dual basis coefficients A = D M^-1
+    /// (psi_k = sum_l A_kl N_l; M the face's mass matrix, D its row sums)
+    /// and each Gauss point's gap (m, capped) and normal at the last
+    /// weighted_gaps().
+    struct DualFace
+    {
+      typename ContactSurface<dim>::SlaveFace face;
+      dealii::FullMatrix<double>              dual;
+      std::vector<double>                     gap;
+      std::vector<Eigen::Vector3d>            normal;
+    };
+    std::vector<DualFace> faces;
+    /// Face mode, per dof of the solid (a node's in its x component):
+    /// weighted gap (m^3), pressure Lambda (Pa, kept as the next step's
+    /// start) and the normal force on the nodes (N).
+    VectorType   weighted_gap, multiplier, face_force;
+    double       gap_cap    = 0; ///< m
+    unsigned int max_sweeps = 100;
+    unsigned int sweeps     = 0; ///< of the last enforce()
 
     dealii::TimerOutput           &timer;
     std::vector<std::vector<Pose>> poses_old;
