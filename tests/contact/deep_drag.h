@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace softgrasp_tests
 {
@@ -52,6 +53,29 @@ namespace softgrasp_tests
     SG_CHECK(record != records.end(), "a record at every millimetre");
     const auto &force = record->forces[0][0].force;
     return {{force[2], -force[0]}};
+  }
+
+  /// The largest relative differences of @p run against @p reference
+  /// (normal force and drag, N, per millimetre from 0): normal force, drag
+  /// from @p first_drag_mm on and drag/normal ratio from @p first_ratio_mm
+  /// on.
+  inline std::array<double, 3>
+  largest_differences(const std::vector<std::array<double, 2>> &run,
+                      const std::vector<std::array<double, 2>> &reference,
+                      const unsigned int first_drag_mm  = 1,
+                      const unsigned int first_ratio_mm = 0)
+  {
+    std::array<double, 3> w = {{0, 0, 0}};
+    for (std::size_t mm = 0; mm < run.size(); ++mm)
+    {
+      const auto &a = run[mm], &b = reference[mm];
+      w[0] = std::max(w[0], std::abs(a[0] / b[0] - 1));
+      if (mm >= first_drag_mm)
+        w[1] = std::max(w[1], std::abs(a[1] / b[1] - 1));
+      if (mm >= first_ratio_mm)
+        w[2] = std::max(w[2], std::abs((a[1] / a[0]) / (b[1] / b[0]) - 1));
+    }
+    return w;
   }
 } // namespace softgrasp_tests
 #endif

@@ -47,23 +47,6 @@ namespace
     return out;
   }
 
-  /// The largest relative differences (normal force, drag from 1 mm,
-  /// ratio) of @p run against @p reference.
-  std::array<double, 3>
-  worst(const std::vector<std::array<double, 2>> &run,
-        const std::vector<std::array<double, 2>> &reference)
-  {
-    std::array<double, 3> w = {{0, 0, 0}};
-    for (std::size_t mm = 0; mm < run.size(); ++mm)
-    {
-      const auto &a = run[mm], &b = reference[mm];
-      w[0] = std::max(w[0], std::abs(a[0] / b[0] - 1));
-      if (mm >= 1)
-        w[1] = std::max(w[1], std::abs(a[1] / b[1] - 1));
-      w[2] = std::max(w[2], std::abs((a[1] / a[0]) / (b[1] / b[0]) - 1));
-    }
-    return w;
-  }
 } // namespace
 
 int
@@ -74,7 +57,7 @@ main(int argc, char **argv)
   const auto quasi_static = drag("quasi-static");
   for (const std::string integrator : {"implicit dynamic", "explicit dynamic"})
   {
-    const auto w = worst(drag(integrator), quasi_static);
+    const auto w = largest_differences(drag(integrator), quasi_static);
     std::cout << integrator << " against quasi-static, 0 to 7 mm: normal "
               << 100 * w[0] << " %, drag " << 100 * w[1] << " %, ratio "
               << 100 * w[2] << " %" << std::endl;

@@ -18,7 +18,7 @@ using namespace softgrasp_tests;
 namespace
 {
   std::string punch_prm(const std::string &integrator,
-                        const std::string &integration = "nodes")
+                        const std::string &variant = "nodes")
   {
     const double       depth = 2e-4, T = 0.25;
     std::ostringstream s;
@@ -27,7 +27,7 @@ namespace
                    0.01,
                    1,
                    10,
-                   "output-punch-" + integrator + "-" + integration)
+                   "output-punch-" + integrator + "-" + variant.substr(0, 4))
       << "subsection Rigid bodies\n subsection Body indenter\n"
       << "  set Trajectory = " << cosine_ramp_trajectory(depth, T)
       << "\n end\nend\n"
@@ -38,11 +38,15 @@ namespace
       << "subsection Finite element\n set Formulation = displacement\nend\n"
       << "subsection Explicit dynamics\n set Mass damping = 200\n"
       << " set Mass scaling time step = 4e-5\nend\n"
-      << "subsection Contact\n set Potential integration = " << integration
-      << (integration == "faces" && integrator == "implicit"
+      << "subsection Contact\n set Potential integration = "
+      << (variant == "nodes" ? "nodes" : "faces")
+      << (variant == "nodes" ? ""
+          : integrator == "implicit"
               ? "\n set Enforcement = incremental potential\n"
                 " set Penalty factor = 1000"
-              : "")
+              : "\n set Penalty factor = 1000\n"
+                " set Explicit faces = " +
+                    variant)
       << "\nend\n";
     return s.str();
   }
@@ -53,10 +57,15 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(3);
-  // node-wise, then the weighted gaps of the faces (the penetration is then
-  // that of the weighted gap, within the sweeps' tolerance of 1e-9 of the
-  // model's size)
-  for (const std::string integration : {"nodes", "faces"})
+  // node-wise (against the implicit Lagrange multipliers), then on the
+  // faces (against the implicit face potential): the dual mortar weighted
+  // gaps (their penetration within the sweeps' tolerance of 1e-9 of the
+  // model's size) and, on one rank, the face potential (its penetration the
+  // penalty's)
+  std::vector<std::string> variants = {"nodes", "dual mortar"};
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
+    variants.push_back("potential");
+  for (const std::string &integration : variants)
   {
     auto implicit_solver = make_solver<3>(punch_prm("implicit", integration));
     implicit_solver->run();
@@ -95,7 +104,9 @@ main(int argc, char **argv)
       penetration =
           std::max(penetration, history.value(row, "max_penetration"));
     }
-    const double      allowed = integration == "nodes" ? 1e-12 : 1e-11;
+    const double      allowed = integration == "nodes"         ? 1e-12
+                                : integration == "dual mortar" ? 1e-11
+                                                               : 1e-9;
     const std::size_t last    = history.rows.size() - 1;
     dealii::deallog << "added mass "
                     << history.value(last, "added_mass_percent") << " %"

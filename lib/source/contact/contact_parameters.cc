@@ -143,9 +143,23 @@ namespace softgrasp
         "same unknowns. With 'faces' use 'Penalty factor = 1000': at 100 "
         "the weighted penetration stays near 1e-3 of the spacing and steps "
         "are accepted unsettled (doc/contact.md). The explicit integrator "
-        "reads it too: 'faces' enforces there the gap integrated over the "
-        "faces against dual mortar multipliers (weighted gaps, pressures on "
-        "the nodes; friction node-wise) instead of the gap at each node. "
+        "reads it too: 'faces' puts its contact on the faces ('Explicit "
+        "faces'). Unit: none.");
+    prm.declare_entry(
+        "Explicit faces",
+        "potential",
+        Patterns::Selection("potential|dual mortar"),
+        "The explicit integrator with 'Potential integration = faces': "
+        "'potential': each step minimises the lumped-mass inertia of the "
+        "slave nodes' correction plus the same face potential as the "
+        "implicit solvers (penalty and multipliers at the Gauss points, "
+        "friction lagged; the multipliers and lags updated once per step; "
+        "the slip length scaled by the step over 'Time/Time step', so that "
+        "it smooths the same slip speed), so the integrators share one "
+        "discretization; one MPI rank. 'dual mortar': the weighted gaps "
+        "int psi_k g dA >= 0 of dual mortar multipliers, solved node by "
+        "node, friction node-wise (closer to converged forces on coarse "
+        "meshes, but it folds where the nodes do; doc/contact.md). "
         "Unit: none.");
     prm.leave_subsection();
   }
@@ -182,6 +196,7 @@ namespace softgrasp
     accept_unsettled      = prm.get("Unsettled steps") == "accept";
     polish_after          = prm.get_integer("Polish after");
     integrate_on_faces    = prm.get("Potential integration") == "faces";
+    explicit_dual_mortar  = prm.get("Explicit faces") == "dual mortar";
     prm.leave_subsection();
   }
 

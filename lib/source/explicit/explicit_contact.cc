@@ -8,10 +8,18 @@ namespace softgrasp
   template <int dim>
   ExplicitContact<dim>::ExplicitContact(const ContactParameters &parameters,
                                         const RigidBodySet      &bodies,
-                                        TimerOutput             &timer)
+                                        TimerOutput             &timer,
+                                        const double             shear_modulus)
       : ContactSurface<dim>(parameters, bodies)
+      , shear_modulus(shear_modulus)
       , timer(timer)
   {
+  }
+
+  template <int dim>
+  void ExplicitContact<dim>::set_reference_step(const double step)
+  {
+    reference_step = step;
   }
 
   template <int dim>
@@ -43,7 +51,7 @@ namespace softgrasp
         for (unsigned int l = 0; l < n; ++l)
           row_sums[k] += mass(k, l);
       mass.gauss_jordan();
-      DualFace dual_face;
+      ContactFace dual_face;
       dual_face.dual.reinit(n, n);
       for (unsigned int k = 0; k < n; ++k)
         for (unsigned int l = 0; l < n; ++l)
@@ -55,6 +63,8 @@ namespace softgrasp
     }
     // the vectors take the integrator's layout at the first enforce()
     weighted_gap.reinit(0);
+    if (!parameters.explicit_dual_mortar)
+      setup_face_potential(system);
   }
 
   template <int dim>
@@ -148,9 +158,21 @@ namespace softgrasp
                             ? 1.0 - double(steps_done + 1) / relaxation
                             : 0.0;
     ++steps_done;
-    if (parameters.integrate_on_faces)
+    if (parameters.integrate_on_faces && parameters.explicit_dual_mortar)
     {
       enforce_on_faces(dt, h, mass, u_old, left, u);
+      return;
+    }
+    if (parameters.integrate_on_faces)
+    {
+      for (auto &node : node_list)
+      {
+        node.last_converged = node.reference_position;
+        for (unsigned int c = 0; c < dim; ++c)
+          node.last_converged[c] += u_old(node.dofs[c]);
+        node.slip.setZero();
+      }
+      enforce_face_potential(dt, h, mass, u);
       return;
     }
     for (unsigned int j = 0; j < node_list.size(); ++j)
@@ -215,7 +237,7 @@ namespace softgrasp
 
   template <int dim> unsigned int ExplicitContact<dim>::last_sweeps() const
   {
-    return sweeps;
+    return parameters.explicit_dual_mortar ? sweeps : newton_iterations;
   }
 
   template class ExplicitContact<2>;

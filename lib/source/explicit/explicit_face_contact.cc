@@ -13,6 +13,19 @@ namespace softgrasp
   using namespace dealii;
 
   template <int dim>
+  void ExplicitContact<dim>::report_nearest(Node             &node,
+                                            const VectorType &u) const
+  {
+    Eigen::Vector3d x = node.reference_position;
+    for (unsigned int c = 0; c < dim; ++c)
+      x[c] += u(node.dofs[c]);
+    const Proximity p = this->nearest(x);
+    node.body         = p.body;
+    node.geom         = p.geom;
+    node.normal       = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
+  }
+
+  template <int dim>
   void ExplicitContact<dim>::weighted_gaps(const VectorType &u)
   {
     weighted_gap = 0;
@@ -213,16 +226,10 @@ namespace softgrasp
     double       worst = 0;
     for (unsigned int j = 0; j < n; ++j)
     {
-      auto           &node = node_list[j];
-      Eigen::Vector3d x    = node.reference_position;
-      for (unsigned int c = 0; c < dim; ++c)
-        x[c] += u(node.dofs[c]);
-      const Proximity p = this->nearest(x);
-      node.body         = p.body;
-      node.geom         = p.geom;
-      node.normal       = p.body >= 0 ? p.normal : Eigen::Vector3d::Zero();
-      node.gap          = weighted_gap(node.dofs[0]) / node.reference_area;
-      worst             = std::max(worst,
+      auto &node = node_list[j];
+      report_nearest(node, u);
+      node.gap = weighted_gap(node.dofs[0]) / node.reference_area;
+      worst    = std::max(worst,
                        (target[j] - weighted_gap(node.dofs[0])) /
                            node.reference_area);
       if (!(multiplier(node.dofs[0]) > 0))
@@ -244,6 +251,8 @@ namespace softgrasp
 #define SOFTGRASP_INSTANTIATE(dim)                                             \
   template void ExplicitContact<dim>::weighted_gaps(const VectorType &);       \
   template void ExplicitContact<dim>::normal_forces();                         \
+  template void ExplicitContact<dim>::report_nearest(                          \
+      Node &, const VectorType &) const;                                       \
   template void ExplicitContact<dim>::enforce_on_faces(const double,           \
                                                        const double,           \
                                                        const VectorType &,     \

@@ -48,11 +48,15 @@ namespace softgrasp
   template <int dim>
   std::unique_ptr<ContactSurface<dim>>
   ExplicitStepper<dim>::make_contact(const SimulationAccess<dim> &run,
-                                     const double /*shear_modulus*/)
+                                     const double                 shear_modulus)
   {
     sim.emplace(run);
-    auto contact = std::make_unique<ExplicitContact<dim>>(
-        run.contact_parameters(), run.rigid_bodies(), run.timers());
+    auto contact =
+        std::make_unique<ExplicitContact<dim>>(run.contact_parameters(),
+                                               run.rigid_bodies(),
+                                               run.timers(),
+                                               shear_modulus);
+    contact->set_reference_step(sim->parameters().time.step_size);
     contact->setup(run.solid());
     explicit_contact = contact.get();
     return contact;

@@ -55,9 +55,12 @@ namespace softgrasp
     /// slave surface: at the nodes, each weighted by its area (false), or
     /// at the Gauss points of each slave face, the gap interpolated
     /// between the nodes (true; 'Potential integration = faces'). The
-    /// explicit integrator's contact then enforces dual mortar weighted
-    /// gaps of the faces instead of the nodes' gaps.
+    /// explicit integrator's contact then acts on the faces too.
     bool integrate_on_faces = false;
+    /// The explicit integrator on faces: the implicit solvers' face
+    /// potential per step (false) or dual mortar weighted gaps (true;
+    /// 'Explicit faces = dual mortar').
+    bool explicit_dual_mortar = false;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);

@@ -1,10 +1,13 @@
 #ifndef softgrasp_explicit_explicit_contact_h
 #define softgrasp_explicit_explicit_contact_h
 
+#include <Eigen/SparseCore>
+#include <array>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <softgrasp/contact/contact_surface.h>
+#include <softgrasp/contact/nodal_potential.h>
 
 namespace softgrasp
 {
@@ -44,15 +47,37 @@ namespace softgrasp
    * first order (dG_k/dLambda_k = D_k^2 dt h / m_k on a flat surface), so
    * a few projected Jacobi sweeps solve them (enforce_on_faces()). Coulomb
    * friction stays node-wise, bounded by mu times the node's normal force.
+   * This is 'Contact/Explicit faces = dual mortar'.
+   *
+   * 'Explicit faces = potential' (the default) shares the implicit
+   * solvers' face potential instead (enforce_face_potential()): the
+   * corrected positions x of the slave nodes minimise
+   *   sum_j m_j / (2 dt h) |x_j - x_j^pred|^2 + sum_q Phi_q(x_q),
+   * Phi_q the augmented Lagrangian and lagged friction potential of each
+   * Gauss point of the slave faces (evaluate_nodal_potential(), the
+   * penalty factor 2 mu_0 w_q / h_q). Newton's method with a sparse direct
+   * solve on the slave dofs and a line search on that energy finds them;
+   * after the step the multipliers take the nodes' projected pressures
+   * and the friction lags the new normal forces (one Uzawa update per
+   * step instead of the implicit solvers' outer iterations). The slip
+   * length eps is scaled by dt / 'Time/Time step', so that the smoothing
+   * of Coulomb's law is the same slip speed as in an implicit step.
    */
   template <int dim> class ExplicitContact : public ContactSurface<dim>
   {
   public:
     using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
 
+    /// @p shear_modulus (Pa): the largest initial one, for the face
+    /// potential's penalty (as the implicit solvers').
     ExplicitContact(const ContactParameters &parameters,
                     const RigidBodySet      &bodies,
-                    dealii::TimerOutput     &timer);
+                    dealii::TimerOutput     &timer,
+                    const double             shear_modulus = 0);
+
+    /// The record interval 'Time/Time step' (s): the face potential's slip
+    /// length is scaled by the explicit step over it.
+    void set_reference_step(const double step);
 
     /// Find the slave nodes and their free components (those not
     /// constrained in the system's constraint set: Dirichlet, hanging).
@@ -90,7 +115,8 @@ namespace softgrasp
     /// enforce(), on all ranks.
     double max_penetration() const;
 
-    /// Face mode: the Jacobi sweeps of the last enforce() (0 in node mode).
+    /// Face mode: the Jacobi sweeps (dual mortar) or Newton iterations
+    /// (potential) of the last enforce(); 0 in node mode.
     unsigned int last_sweeps() const;
 
   private:
@@ -140,6 +166,9 @@ namespace softgrasp
                           const VectorType &u_old,
                           const double      left,
                           VectorType       &u);
+    /// Set @p node's nearest geom and its normal at the node's position
+    /// for the displacement @p u (face modes' report).
+    void report_nearest(Node &node, const VectorType &u) const;
     /// Face mode: G_k = int psi_k g dA into weighted_gap (owned, summed
     /// over the ranks), with each Gauss point's normal, for @p u (ghosted).
     void weighted_gaps(const VectorType &u);
@@ -147,18 +176,72 @@ namespace softgrasp
     /// pressures (multiplier, ghosted) into face_force (owned, summed).
     void normal_forces();
 
+    /// Face potential mode: what one Gauss point holds from step to step.
+    struct FacePoint
+    {
+      double          penalty      = 0; ///< k (N/m)
+      double          multiplier   = 0; ///< lam (N)
+      double          normal_force = 0; ///< lambda^k (N), lagged
+      Eigen::Vector3d lag_normal   = Eigen::Vector3d::Zero(); ///< of T
+      int             body         = -1; ///< the lag's geom (-1: none)
+      unsigned int    geom         = 0;
+      Eigen::Vector3d last         = Eigen::Vector3d::Zero(); ///< x at t^n (m)
+      NodalPotential  potential; ///< at the last evaluation
+      Eigen::Vector3d x         = Eigen::Vector3d::Zero(); ///< there (m)
+      int             near_body = -1; ///< the nearest geom there
+      unsigned int    near_geom = 0;
+    };
+
     /// Face mode: a slave face with its dual basis coefficients A = D M^-1
     /// (psi_k = sum_l A_kl N_l; M the face's mass matrix, D its row sums)
     /// and each Gauss point's gap (m, capped) and normal at the last
-    /// weighted_gaps().
-    struct DualFace
+    /// weighted_gaps(); for the potential, the column of each face dof in
+    /// the Newton system (-1: fixed) and the points' states.
+    struct ContactFace
     {
       typename ContactSurface<dim>::SlaveFace face;
       dealii::FullMatrix<double>              dual;
       std::vector<double>                     gap;
       std::vector<Eigen::Vector3d>            normal;
+      std::vector<int>                        column;
+      std::vector<FacePoint>                  points;
     };
-    std::vector<DualFace> faces;
+    std::vector<ContactFace> faces;
+
+    /// Face potential mode: the columns of the free dofs of the slave
+    /// nodes, the penalties, and the largest k h (N).
+    void setup_face_potential(const SolidSystem<dim> &system);
+    /// Face potential mode: the step's minimisation (Newton on the slave
+    /// dofs) and the lag update; sets the nodes' report.
+    void enforce_face_potential(const double      dt,
+                                const double      h,
+                                const VectorType &mass,
+                                VectorType       &u);
+    /**
+     * Face potential mode: sum_q Phi_q at the displacement @p u (slip
+     * length @p eps, m); with @p gradient and @p hessian also its gradient
+     * (added, by column) and Hessian (triplets; the rigid surface's
+     * curvature left out, so that it is positive semi-definite).
+     */
+    double face_potential(const VectorType                    &u,
+                          const double                         eps,
+                          Eigen::VectorXd                     *gradient,
+                          std::vector<Eigen::Triplet<double>> *hessian);
+    /// Face potential mode, after a step: the projected nodal pressures
+    /// Lambda_k = max(0, sum_q N_k lambda_q / D_k) as each point's
+    /// multiplier and lagged normal force (w_q sum_k N_k Lambda_k), the
+    /// frames at the current normals, the positions; the nodes' report.
+    void update_face_lags(const VectorType &u);
+
+    double                          shear_modulus  = 0; ///< Pa
+    double                          reference_step = 0; ///< s
+    unsigned int                    degree         = 1;
+    std::vector<std::array<int, 3>> node_column; ///< per node, -1: fixed
+    unsigned int                    n_columns        = 0;
+    double                          force_scale      = 0; ///< max k h (N)
+    double                          smallest_spacing = 0; ///< of the faces (m)
+    Eigen::VectorXd                 correction; ///< of the last step (m)
+    unsigned int                    newton_iterations = 0; ///< last step
     /// Face mode, per dof of the solid (a node's in its x component):
     /// weighted gap (m^3), pressure Lambda (Pa, kept as the next step's
     /// start) and the normal force on the nodes (N).
