@@ -88,6 +88,144 @@ namespace softgrasp
   }
 
   template <int dim>
+  typename ExplicitContact<dim>::FaceStep
+  ExplicitContact<dim>::begin_face_step(const double      dt,
+                                        const double      h,
+                                        const VectorType &mass,
+                                        const VectorType &u_old,
+                                        const double      left,
+                                        const VectorType &u)
+  {
+    const unsigned int n = node_list.size();
+    FaceStep           step;
+    step.x_pred.assign(n, Eigen::Vector3d::Zero());
+    step.mask.assign(n, Eigen::Vector3d::Zero());
+    step.compliance.assign(n, 0.0);
+    step.target.assign(n, 0.0);
+    step.near.assign(n, Proximity());
+    for (unsigned int j = 0; j < n; ++j)
+    {
+      auto &node     = node_list[j];
+      step.x_pred[j] = node.last_converged = node.reference_position;
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        step.x_pred[j][c] += u(node.dofs[c]);
+        node.last_converged[c] += u_old(node.dofs[c]);
+        if (node.free[c])
+        {
+          step.mask[j][c]    = 1;
+          step.compliance[j] = dt * h / mass(node.dofs[c]);
+        }
+      }
+      // G_k >= -(allowed overlap) D_k
+      step.target[j] = -(allowance.empty() ? 0.0 : left * allowance[j]) *
+                       node.reference_area;
+      node.status = ContactStatus::inactive;
+      node.force.setZero();
+      node.slip.setZero();
+    }
+    return step;
+  }
+
+  template <int dim>
+  bool ExplicitContact<dim>::pressures_settled(const FaceStep &step) const
+  {
+    // the complementarity residual (m): |G_k - target| / D_k where
+    // pressed, the overlap beyond the target where not
+    double residual = 0, pressed = 0;
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const auto  &node = node_list[j];
+      const double g    = weighted_gap(node.dofs[0]) - step.target[j];
+      const double lam  = multiplier(node.dofs[0]);
+      residual          = std::max(residual,
+                          (lam > 0 ? std::abs(g) : std::max(0.0, -g)) /
+                              node.reference_area);
+      pressed           = std::max(pressed, lam);
+    }
+    residual = Utilities::MPI::max(residual, comm);
+    pressed  = Utilities::MPI::max(pressed, comm);
+    return residual <= 1e-9 * gap_cap && (sweeps > 0 || pressed == 0);
+  }
+
+  template <int dim>
+  void ExplicitContact<dim>::update_pressures(FaceStep         &step,
+                                              const VectorType &u)
+  {
+    // the Jacobi update: dG_k/dLambda_k = D_k^2 (dt h / m_k) (n.n)_free
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      const auto     &node = node_list[j];
+      Eigen::Vector3d x    = node.reference_position;
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] += u(node.dofs[c]);
+      const Proximity &near = step.near[j] = this->nearest(x);
+      const double     along =
+          near.normal.dot(near.normal.cwiseProduct(step.mask[j]));
+      double &lam = multiplier(node.dofs[0]);
+      if (near.body < 0 || step.compliance[j] == 0 || along < 1e-6)
+      {
+        lam = 0;
+        continue;
+      }
+      const double D = node.reference_area;
+      lam            = std::max(0.0,
+                     lam - (weighted_gap(node.dofs[0]) - step.target[j]) /
+                               (step.compliance[j] * D * D * along));
+    }
+    multiplier.update_ghost_values();
+  }
+
+  template <int dim>
+  void ExplicitContact<dim>::move_face_nodes(const FaceStep &step,
+                                             VectorType     &u)
+  {
+    // the normal forces, then Coulomb friction that holds each node at the
+    // surface point of t^n, carried by the body
+    const double mu = parameters.friction_coefficient;
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+    {
+      auto           &node = node_list[j];
+      const auto     &near = step.near[j];
+      Eigen::Vector3d f_n  = Eigen::Vector3d::Zero();
+      for (unsigned int c = 0; c < dim; ++c)
+        f_n[c] = step.mask[j][c] * face_force(node.dofs[c]);
+      const double    c_j = step.compliance[j];
+      Eigen::Vector3d x   = step.x_pred[j] + c_j * f_n;
+      Eigen::Vector3d d   = Eigen::Vector3d::Zero();
+      node.status         = ContactStatus::inactive;
+      if (near.body >= 0 && c_j > 0 && f_n.norm() > 0)
+      {
+        const Pose &now = poses_now[near.body][near.geom];
+        const Pose &old = poses_old[near.body][near.geom];
+        node.slip       = x - now.to_world(old.to_local(node.last_converged));
+        const Eigen::Vector3d &normal = near.normal;
+        d = -(node.slip - normal * normal.dot(node.slip))
+                 .cwiseProduct(step.mask[j]);
+        node.status = ContactStatus::stick;
+        if (mu == 0)
+        {
+          d.setZero();
+          node.status = ContactStatus::slip;
+        }
+        else if (d.norm() > mu * f_n.norm() * c_j)
+        {
+          d *= mu * f_n.norm() * c_j / d.norm();
+          node.status = ContactStatus::slip;
+        }
+        x += d;
+        node.slip += d;
+        node.slip -= normal * normal.dot(node.slip);
+      }
+      node.force = c_j > 0 ? Eigen::Vector3d(f_n + d / c_j) : f_n;
+      for (unsigned int c = 0; c < dim; ++c)
+        if (node.free[c])
+          u(node.dofs[c]) = x[c] - node.reference_position[c];
+    }
+    u.update_ghost_values();
+  }
+
+  template <int dim>
   void ExplicitContact<dim>::enforce_on_faces(const double      dt,
                                               const double      h,
                                               const VectorType &mass,
@@ -95,149 +233,42 @@ namespace softgrasp
                                               const double      left,
                                               VectorType       &u)
   {
-    const double       mu = parameters.friction_coefficient;
-    const unsigned int n  = node_list.size();
     if (weighted_gap.size() != u.size())
     {
       for (auto *v : {&weighted_gap, &multiplier, &face_force})
         v->reinit(u);
       multiplier = 0; // later steps start from the last step's pressures
     }
-    // the predicted positions, the old ones, the free components and the
-    // compliance dt h / m of each owned node
-    std::vector<Eigen::Vector3d> x_pred(n), mask(n, Eigen::Vector3d::Zero());
-    std::vector<double>          compliance(n, 0.0), target(n, 0.0);
-    for (unsigned int j = 0; j < n; ++j)
-    {
-      auto &node = node_list[j];
-      x_pred[j] = node.last_converged = node.reference_position;
-      for (unsigned int c = 0; c < dim; ++c)
-      {
-        x_pred[j][c] += u(node.dofs[c]);
-        node.last_converged[c] += u_old(node.dofs[c]);
-        if (node.free[c])
-        {
-          mask[j][c]    = 1;
-          compliance[j] = dt * h / mass(node.dofs[c]);
-        }
-      }
-      // G_k >= -(allowed overlap) D_k
-      target[j] = -(allowance.empty() ? 0.0 : left * allowance[j]) *
-                  node.reference_area;
-      node.status = ContactStatus::inactive;
-      node.force.setZero();
-      node.slip.setZero();
-    }
+    FaceStep step = begin_face_step(dt, h, mass, u_old, left, u);
     // the faces read the nodes of other ranks; the integrator's vector
     // leaves in the ghost state it came in (its matrix-free loops trust
     // ghost values of a ghosted vector)
     const bool was_ghosted = u.has_ghost_elements();
     u.update_ghost_values();
-    const double           sweep_tolerance = 1e-9 * gap_cap;
-    std::vector<Proximity> near(n);
     for (sweeps = 0;; ++sweeps)
     {
       weighted_gaps(u);
-      // the complementarity residual (m): |G_k - target| / D_k where
-      // pressed, the overlap beyond the target where not
-      double residual = 0, pressed = 0;
-      for (unsigned int j = 0; j < n; ++j)
-      {
-        const auto  &node = node_list[j];
-        const double g    = weighted_gap(node.dofs[0]) - target[j];
-        const double lam  = multiplier(node.dofs[0]);
-        residual          = std::max(residual,
-                            (lam > 0 ? std::abs(g) : std::max(0.0, -g)) /
-                                node.reference_area);
-        pressed           = std::max(pressed, lam);
-      }
-      residual = Utilities::MPI::max(residual, comm);
-      pressed  = Utilities::MPI::max(pressed, comm);
-      if ((residual <= sweep_tolerance && (sweeps > 0 || pressed == 0)) ||
-          sweeps == max_sweeps)
+      if (pressures_settled(step) || sweeps == max_sweeps)
         break;
-      // the Jacobi update: dG_k/dLambda_k = D_k^2 (dt h / m_k) (n.n)_free
-      for (unsigned int j = 0; j < n; ++j)
-      {
-        const auto     &node = node_list[j];
-        Eigen::Vector3d x    = node.reference_position;
-        for (unsigned int c = 0; c < dim; ++c)
-          x[c] += u(node.dofs[c]);
-        near[j] = this->nearest(x);
-        const double along =
-            near[j].normal.dot(near[j].normal.cwiseProduct(mask[j]));
-        double &lam = multiplier(node.dofs[0]);
-        if (near[j].body < 0 || compliance[j] == 0 || along < 1e-6)
-        {
-          lam = 0;
-          continue;
-        }
-        const double D = node.reference_area;
-        lam            = std::max(0.0,
-                       lam - (weighted_gap(node.dofs[0]) - target[j]) /
-                                 (compliance[j] * D * D * along));
-      }
-      multiplier.update_ghost_values();
+      update_pressures(step, u);
       normal_forces();
-      // the new positions: the normal forces, then Coulomb friction that
-      // holds each node at the surface point of t^n, carried by the body
-      for (unsigned int j = 0; j < n; ++j)
-      {
-        auto           &node = node_list[j];
-        Eigen::Vector3d f_n  = Eigen::Vector3d::Zero();
-        for (unsigned int c = 0; c < dim; ++c)
-          f_n[c] = mask[j][c] * face_force(node.dofs[c]);
-        const double    c_j = compliance[j];
-        Eigen::Vector3d x   = x_pred[j] + c_j * f_n;
-        Eigen::Vector3d d   = Eigen::Vector3d::Zero();
-        node.status         = ContactStatus::inactive;
-        if (near[j].body >= 0 && c_j > 0 && f_n.norm() > 0)
-        {
-          const Pose &now = poses_now[near[j].body][near[j].geom];
-          const Pose &old = poses_old[near[j].body][near[j].geom];
-          node.slip       = x - now.to_world(old.to_local(node.last_converged));
-          const Eigen::Vector3d &normal = near[j].normal;
-          d = -(node.slip - normal * normal.dot(node.slip))
-                   .cwiseProduct(mask[j]);
-          node.status = ContactStatus::stick;
-          if (mu == 0)
-          {
-            d.setZero();
-            node.status = ContactStatus::slip;
-          }
-          else if (d.norm() > mu * f_n.norm() * c_j)
-          {
-            d *= mu * f_n.norm() * c_j / d.norm();
-            node.status = ContactStatus::slip;
-          }
-          x += d;
-          node.slip += d;
-          node.slip -= normal * normal.dot(node.slip);
-        }
-        node.force = c_j > 0 ? Eigen::Vector3d(f_n + d / c_j) : f_n;
-        for (unsigned int c = 0; c < dim; ++c)
-          if (node.free[c])
-            u(node.dofs[c]) = x[c] - node.reference_position[c];
-      }
-      u.update_ghost_values();
+      move_face_nodes(step, u);
     }
     // the nodes' report: weighted gap, nearest geom and normal, counts
     unsigned int active = 0, slipping = 0;
     double       worst = 0;
-    for (unsigned int j = 0; j < n; ++j)
+    for (unsigned int j = 0; j < node_list.size(); ++j)
     {
       auto &node = node_list[j];
       report_nearest(node, u);
       node.gap = weighted_gap(node.dofs[0]) / node.reference_area;
       worst    = std::max(worst,
-                       (target[j] - weighted_gap(node.dofs[0])) /
+                       (step.target[j] - weighted_gap(node.dofs[0])) /
                            node.reference_area);
       if (!(multiplier(node.dofs[0]) > 0))
         node.status = ContactStatus::inactive;
-      if (node.status != ContactStatus::inactive)
-        ++active;
-      if (node.status == ContactStatus::slip)
-        ++slipping;
+      active += node.status != ContactStatus::inactive;
+      slipping += node.status == ContactStatus::slip;
     }
     if (!was_ghosted)
       u.zero_out_ghost_values();
@@ -253,6 +284,19 @@ namespace softgrasp
   template void ExplicitContact<dim>::normal_forces();                         \
   template void ExplicitContact<dim>::report_nearest(                          \
       Node &, const VectorType &) const;                                       \
+  template typename ExplicitContact<dim>::FaceStep                             \
+                ExplicitContact<dim>::begin_face_step(const double,            \
+                                        const double,            \
+                                        const VectorType &,      \
+                                        const VectorType &,      \
+                                        const double,            \
+                                        const VectorType &);     \
+  template bool ExplicitContact<dim>::pressures_settled(const FaceStep &)      \
+      const;                                                                   \
+  template void ExplicitContact<dim>::update_pressures(FaceStep &,             \
+                                                       const VectorType &);    \
+  template void ExplicitContact<dim>::move_face_nodes(const FaceStep &,        \
+                                                      VectorType &);           \
   template void ExplicitContact<dim>::enforce_on_faces(const double,           \
                                                        const double,           \
                                                        const VectorType &,     \

@@ -141,36 +141,28 @@ namespace softgrasp
   }
 
   template <int dim>
-  void ExplicitContact<dim>::enforce_face_potential(const double      dt,
-                                                    const double      h,
-                                                    const VectorType &mass,
-                                                    VectorType       &u)
+  void ExplicitContact<dim>::write_columns(const Eigen::VectorXd &x,
+                                           VectorType            &u) const
   {
-    // x = u on the columns; a = m / (dt h); the prediction
-    Eigen::VectorXd a(n_columns), predicted(n_columns);
     for (unsigned int j = 0; j < node_list.size(); ++j)
       for (unsigned int c = 0; c < dim; ++c)
         if (node_column[j][c] >= 0)
-        {
-          a[node_column[j][c]]         = mass(node_list[j].dofs[c]) / (dt * h);
-          predicted[node_column[j][c]] = u(node_list[j].dofs[c]);
-        }
-    const auto write = [&](const Eigen::VectorXd &x)
-    {
-      for (unsigned int j = 0; j < node_list.size(); ++j)
-        for (unsigned int c = 0; c < dim; ++c)
-          if (node_column[j][c] >= 0)
-            u(node_list[j].dofs[c]) = x[node_column[j][c]];
-    };
-    // the same slip speed as an implicit step of 'Time/Time step'
-    const double eps = parameters.slip_tolerance *
-                       (reference_step > 0 ? dt / reference_step : 1.0);
+          u(node_list[j].dofs[c]) = x[node_column[j][c]];
+  }
+
+  template <int dim>
+  Eigen::VectorXd
+  ExplicitContact<dim>::minimise_step(const Eigen::VectorXd &a,
+                                      const Eigen::VectorXd &predicted,
+                                      const double           eps,
+                                      VectorType            &u)
+  {
     const auto inertia = [&](const Eigen::VectorXd &x)
     { return 0.5 * (a.array() * (x - predicted).array().square()).sum(); };
     // start from the last step's correction: the contact forces change
     // little from step to step
     Eigen::VectorXd x = predicted + correction;
-    write(x);
+    write_columns(x, u);
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
     std::vector<Eigen::Triplet<double>>                triplets;
     // converged: the force residual within 1e-8 of the largest k h, or the
@@ -201,17 +193,38 @@ namespace softgrasp
       for (unsigned int cut = 0; cut < 30; ++cut, alpha *= 0.5)
       {
         const Eigen::VectorXd trial = x + alpha * step;
-        write(trial);
+        write_columns(trial, u);
         if (inertia(trial) + face_potential(u, eps, nullptr, nullptr) <=
             energy + 1e-4 * alpha * slope)
           break;
       }
       x += alpha * step;
-      write(x);
+      write_columns(x, u);
       if (alpha * step.lpNorm<Eigen::Infinity>() <= 1e-9 * smallest_spacing)
         break;
     }
-    correction = x - predicted;
+    return x;
+  }
+
+  template <int dim>
+  void ExplicitContact<dim>::enforce_face_potential(const double      dt,
+                                                    const double      h,
+                                                    const VectorType &mass,
+                                                    VectorType       &u)
+  {
+    // a = m / (dt h) and the prediction, by column
+    Eigen::VectorXd a(n_columns), predicted(n_columns);
+    for (unsigned int j = 0; j < node_list.size(); ++j)
+      for (unsigned int c = 0; c < dim; ++c)
+        if (node_column[j][c] >= 0)
+        {
+          a[node_column[j][c]]         = mass(node_list[j].dofs[c]) / (dt * h);
+          predicted[node_column[j][c]] = u(node_list[j].dofs[c]);
+        }
+    // the same slip speed as an implicit step of 'Time/Time step'
+    const double eps = parameters.slip_tolerance *
+                       (reference_step > 0 ? dt / reference_step : 1.0);
+    correction = minimise_step(a, predicted, eps, u) - predicted;
     // the nodes' forces: the correction's M du / (dt h)
     for (unsigned int j = 0; j < node_list.size(); ++j)
     {
@@ -304,6 +317,13 @@ namespace softgrasp
       std::vector<Eigen::Triplet<double>> *);                                  \
   template void ExplicitContact<dim>::enforce_face_potential(                  \
       const double, const double, const VectorType &, VectorType &);           \
+  template void ExplicitContact<dim>::write_columns(const Eigen::VectorXd &,   \
+                                                    VectorType &) const;       \
+  template Eigen::VectorXd ExplicitContact<dim>::minimise_step(                \
+      const Eigen::VectorXd &,                                                 \
+      const Eigen::VectorXd &,                                                 \
+      const double,                                                            \
+      VectorType &);                                                           \
   template void ExplicitContact<dim>::update_face_lags(const VectorType &);
   SOFTGRASP_INSTANTIATE(2)
   SOFTGRASP_INSTANTIATE(3)

@@ -169,6 +169,36 @@ namespace softgrasp
     /// Set @p node's nearest geom and its normal at the node's position
     /// for the displacement @p u (face modes' report).
     void report_nearest(Node &node, const VectorType &u) const;
+    /// Dual mortar: what a step's sweeps share, per owned slave node: the
+    /// predicted position (m), the free components (1 or 0), the compliance
+    /// dt h / m (m/N), the weighted gap's lower bound (m^3; minus the
+    /// allowed overlap times D_k) and the nearest geom of the last sweep.
+    struct FaceStep
+    {
+      std::vector<Eigen::Vector3d> x_pred, mask;
+      std::vector<double>          compliance, target;
+      std::vector<Proximity>       near;
+    };
+    /// Dual mortar: the step's FaceStep from the prediction @p u, the
+    /// position @p u_old of t^n and the lumped @p mass; resets the nodes'
+    /// forces and status.
+    FaceStep begin_face_step(const double      dt,
+                             const double      h,
+                             const VectorType &mass,
+                             const VectorType &u_old,
+                             const double      left,
+                             const VectorType &u);
+    /// Dual mortar: whether every weighted gap meets its constraint and
+    /// complementarity within 1e-9 of the model's size (after a first
+    /// sweep, unless nothing is pressed). Collective.
+    bool pressures_settled(const FaceStep &step) const;
+    /// Dual mortar: one projected Jacobi update of the pressures
+    /// (multiplier, then ghosted), recording each node's nearest geom.
+    void update_pressures(FaceStep &step, const VectorType &u);
+    /// Dual mortar: each node at its prediction moved by its normal force
+    /// (face_force) and Coulomb friction; sets the node's force, slip and
+    /// status. Updates @p u's ghosts. Collective.
+    void move_face_nodes(const FaceStep &step, VectorType &u);
     /// Face mode: G_k = int psi_k g dA into weighted_gap (owned, summed
     /// over the ranks), with each Gauss point's normal, for @p u (ghosted).
     void weighted_gaps(const VectorType &u);
@@ -217,6 +247,16 @@ namespace softgrasp
                                 const double      h,
                                 const VectorType &mass,
                                 VectorType       &u);
+    /// Face potential mode: @p x (by column) into @p u's slave dofs.
+    void write_columns(const Eigen::VectorXd &x, VectorType &u) const;
+    /// Face potential mode: Newton's method with a backtracking line search
+    /// on the step's energy sum a_i (x_i - predicted_i)^2 / 2 + sum_q Phi_q
+    /// (a = m / (dt h) by column; slip length @p eps, m), from the last
+    /// step's correction; returns the minimiser x, also written into @p u.
+    Eigen::VectorXd minimise_step(const Eigen::VectorXd &a,
+                                  const Eigen::VectorXd &predicted,
+                                  const double           eps,
+                                  VectorType            &u);
     /**
      * Face potential mode: sum_q Phi_q at the displacement @p u (slip
      * length @p eps, m); with @p gradient and @p hessian also its gradient
