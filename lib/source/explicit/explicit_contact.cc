@@ -23,6 +23,29 @@ namespace softgrasp
   }
 
   template <int dim>
+  FullMatrix<double> ExplicitContact<dim>::dual_coefficients(
+      const typename ContactSurface<dim>::SlaveFace &face)
+  {
+    // the face's mass matrix M_kl = sum_q w_q N_k N_l and A = D M^-1
+    const unsigned int n = face.dofs.size() / dim;
+    FullMatrix<double> mass(n, n);
+    for (unsigned int q = 0; q < face.weight.size(); ++q)
+      for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int l = 0; l < n; ++l)
+          mass(k, l) += face.weight[q] * face.shape[q][k] * face.shape[q][l];
+    Vector<double> row_sums(n);
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int l = 0; l < n; ++l)
+        row_sums[k] += mass(k, l);
+    mass.gauss_jordan();
+    FullMatrix<double> dual(n, n);
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int l = 0; l < n; ++l)
+        dual(k, l) = row_sums[k] * mass(k, l);
+    return dual;
+  }
+
+  template <int dim>
   void ExplicitContact<dim>::setup(const SolidSystem<dim> &system)
   {
     ContactSurface<dim>::setup(system);
@@ -39,27 +62,13 @@ namespace softgrasp
     gap_cap = system.length_scale();
     for (auto &face : this->slave_faces(system))
     {
-      // the face's mass matrix M_kl = sum_q w_q N_k N_l and A = D M^-1
-      const unsigned int n = face.dofs.size() / dim;
-      FullMatrix<double> mass(n, n);
-      for (unsigned int q = 0; q < face.weight.size(); ++q)
-        for (unsigned int k = 0; k < n; ++k)
-          for (unsigned int l = 0; l < n; ++l)
-            mass(k, l) += face.weight[q] * face.shape[q][k] * face.shape[q][l];
-      Vector<double> row_sums(n);
-      for (unsigned int k = 0; k < n; ++k)
-        for (unsigned int l = 0; l < n; ++l)
-          row_sums[k] += mass(k, l);
-      mass.gauss_jordan();
-      ContactFace dual_face;
-      dual_face.dual.reinit(n, n);
-      for (unsigned int k = 0; k < n; ++k)
-        for (unsigned int l = 0; l < n; ++l)
-          dual_face.dual(k, l) = row_sums[k] * mass(k, l);
-      dual_face.gap.assign(face.weight.size(), 0.0);
-      dual_face.normal.assign(face.weight.size(), Eigen::Vector3d::Zero());
-      dual_face.face = std::move(face);
-      faces.push_back(std::move(dual_face));
+      ContactFace contact_face;
+      if (parameters.explicit_dual_mortar)
+        contact_face.dual = dual_coefficients(face);
+      contact_face.gap.assign(face.weight.size(), 0.0);
+      contact_face.normal.assign(face.weight.size(), Eigen::Vector3d::Zero());
+      contact_face.face = std::move(face);
+      faces.push_back(std::move(contact_face));
     }
     // the vectors take the integrator's layout at the first enforce()
     weighted_gap.reinit(0);

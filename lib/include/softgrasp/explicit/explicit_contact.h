@@ -238,6 +238,10 @@ namespace softgrasp
       std::vector<FacePoint>                  points;
     };
     std::vector<ContactFace> faces;
+    /// Dual mortar: A = D M^-1 of @p face (M its mass matrix, D the row
+    /// sums), so that psi_k = sum_l A_kl N_l.
+    static dealii::FullMatrix<double>
+    dual_coefficients(const typename ContactSurface<dim>::SlaveFace &face);
 
     /// Face potential mode: the columns of the free dofs of the slave
     /// nodes, the penalties, and the largest k h (N).
