@@ -241,11 +241,6 @@ main(int argc, char **argv)
     if (parameters.plot)
       plot_curves(materials, dir);
   }
-  catch (const InputError &e)
-  {
-    std::cerr << "Input error: " << e.what() << std::endl;
-    return 1;
-  }
   catch (const std::exception &e)
   {
     std::cerr << "Error: " << softgrasp::error_message(e) << std::endl;

@@ -163,6 +163,14 @@ main()
                 p[4] = std::nan("");
                 tamper(f, "/bodies/finger_distal/position", p);
               }),
+      variant("far.h5",
+              [](const std::string &f)
+              {
+                // finite, but no scene of a hand: a diverged writer
+                std::vector<double> p(9, 0.0);
+                p[4] = 1e300;
+                tamper(f, "/bodies/finger_distal/position", p);
+              }),
       variant("time.h5",
               [](const std::string &f) {
                 tamper(f, "/time", {0, 0.5, 0.5});

@@ -136,4 +136,19 @@ refused study "Line <1> of file <study.prm>: There is no such subsection to be e
 expect_message study.log "the file is written for a grasp study (sphere_squeeze, arm_grasp, grasp_pull_sweep or mujoco_grasp)"
 printf 'subsection Unknown part\n  set x = 1\nend\n' > unknown-part.prm
 refused unknown-part "the file may be written for another softgrasp program"
+# Bounds (issue 55): values that would wrap around, hide the output or run
+# a single step are refused with the limit, never accepted silently.
+for name in . ..; do
+  with_prm base.prm "base-$name.prm" Output "set Base name = $name"
+  refused "base-$name" "it must be an ordinary file name prefix, not '.' or '..'"
+done
+with_prm base.prm base-long.prm Output "set Base name = $(printf 'b%.0s' $(seq 300))"
+refused base-long "'Output/Base name' has 300 characters: a file name may have at most 255 bytes"
+with_prm base.prm phase-inf.prm Time "set Phases = 0.1: inf"
+refused phase-inf "'0.1: inf' has a value that is not a finite number"
+for id in -1 4294967296 4294967295; do
+  with_prm no-block.prm "manifold-$id.prm" Mesh "set Type = file" "subsection File" \
+    "set File name = broken.inp" "set Manifolds = boundary $id: sphere 0, 0, 0" end
+  refused "manifold-$id" "has the id '$id', which is not a whole number from 0 to 4294967294 (deal.II's boundary ids)"
+done
 echo "bad input: all cases passed"

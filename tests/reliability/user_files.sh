@@ -64,4 +64,24 @@ run_expect 1 ../empty.log "$exe" empty.prm
 expect_clean_error ../empty.log
 expect_message ../empty.log "Parameter 'Output/Base name' is '': it must be a non-empty"
 [ "$(checksum)" = "$before" ] || { echo "FAIL: a refused run touched files"; exit 1; }
+# A manifest that is not a regular file (a folder, a link to a list of
+# the user's) is refused by name; nothing it names is touched.
+echo "block_history.csv" > ../my-list.txt
+for kind in directory "symbolic link"; do
+  rm -rf ../odd && mkdir ../odd
+  echo "the user's history" > ../odd/block_history.csv
+  if [ "$kind" = directory ]; then mkdir ../odd/$manifest
+  else ln -s ../my-list.txt ../odd/$manifest; fi
+  for mode in "move aside" "replace"; do
+    with_prm ../short.prm ../odd.prm Output "set Directory = ../odd" \
+      "set Base name = block" "set Existing results = $mode"
+    run_expect 1 ../odd.log "$exe" ../odd.prm
+    expect_clean_error ../odd.log
+    expect_message ../odd.log "The run manifest '../odd/$manifest' is a $kind"
+    [ "$(cat ../odd/block_history.csv)" = "the user's history" ] || {
+      echo "FAIL: a run with a $kind as manifest touched a file"; exit 1; }
+  done
+done
+[ "$(cat ../my-list.txt)" = "block_history.csv" ] || {
+  echo "FAIL: the linked list was changed"; exit 1; }
 echo "user files: all cases passed"

@@ -198,6 +198,10 @@ namespace softgrasp
           }
         }
       }
+      catch (const InputError &e)
+      {
+        error = e.what();
+      }
       catch (const std::exception &e)
       {
         error = "Cannot prepare the output directory '" + directory +

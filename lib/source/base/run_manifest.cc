@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <softgrasp/base/input_error.h>
 #include <softgrasp/base/run_directory.h>
 #include <softgrasp/base/run_manifest.h>
 #include <stdexcept>
@@ -75,8 +76,30 @@ namespace softgrasp
       }
     } // namespace
 
+    void check_regular(const std::string &directory)
+    {
+      const fs::path  file = fs::path(directory) / manifest_name;
+      std::error_code ignored;
+      const auto      status = fs::symlink_status(file, ignored);
+      if (!fs::exists(status) || fs::is_regular_file(status))
+        return;
+      const std::string what = fs::is_symlink(status) ? "a symbolic link"
+                               : fs::is_directory(status)
+                                   ? "a directory"
+                                   : "not a regular file";
+      throw InputError(
+          "The run manifest '" + file.string() + "' is " + what +
+          ". A run lists what it wrote in a regular file of that name and "
+          "reads or follows nothing else: another file could make it move "
+          "or delete files it did not write. Fix: move '" +
+          file.string() +
+          "' out of the output directory, or choose another "
+          "'Output/Directory'.");
+    }
+
     std::vector<std::string> read(const std::string &directory)
     {
+      check_regular(directory);
       std::vector<std::string> names;
       std::ifstream in(fs::path(directory) / manifest_name, std::ios::binary);
       if (!in)
@@ -98,6 +121,7 @@ namespace softgrasp
 
     void open(const std::string &directory, const bool append_to_earlier)
     {
+      check_regular(directory);
       Ledger ledger;
       ledger.file = (fs::path(directory) / manifest_name).string();
       if (append_to_earlier && fs::exists(ledger.file))

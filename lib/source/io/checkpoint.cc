@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <softgrasp/base/file_checksum.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/run_manifest.h>
 #include <softgrasp/io/checkpoint.h>
@@ -23,24 +24,6 @@ namespace softgrasp
   namespace
   {
     const char *const manifest_name = "manifest.txt";
-
-    /// 64-bit FNV-1a of a file's bytes, as 16 hex digits.
-    std::string checksum(const fs::path &file)
-    {
-      std::ifstream     in(file, std::ios::binary);
-      std::uint64_t     hash = 14695981039346656037ull;
-      std::vector<char> buffer(1 << 16);
-      while (in)
-      {
-        in.read(buffer.data(), buffer.size());
-        for (std::streamsize i = 0; i < in.gcount(); ++i)
-          hash =
-              (hash ^ static_cast<unsigned char>(buffer[i])) * 1099511628211ull;
-      }
-      std::ostringstream hex;
-      hex << std::hex << std::setw(16) << std::setfill('0') << hash;
-      return hex.str();
-    }
 
     /// What a manifest records.
     struct Manifest
@@ -161,7 +144,7 @@ namespace softgrasp
         << "\n";
     for (const auto &name : names)
       out << "file " << name << " " << fs::file_size(fs::path(path) / name)
-          << " " << checksum(fs::path(path) / name) << "\n";
+          << " " << file_checksum(fs::path(path) / name) << "\n";
     for (const auto &[name, value] : settings)
       out << "setting " << name << " = " << value << "\n";
     out << "end\n";
@@ -312,7 +295,7 @@ namespace softgrasp
       if (!fs::exists(file))
         return "the file '" + name + "' is missing";
       const std::string actual =
-          std::to_string(fs::file_size(file)) + " " + checksum(file);
+          std::to_string(fs::file_size(file)) + " " + file_checksum(file);
       if (actual != recorded)
         return "the file '" + name + "' is damaged (its size or checksum " +
                "differs from the manifest)";

@@ -5,6 +5,7 @@
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/io/hdf5_record.h>
 #include <softgrasp/io/kinematics_file.h>
+#include <sstream>
 #include <tuple>
 
 namespace softgrasp
@@ -175,6 +176,11 @@ namespace softgrasp
     }
 
     // ---- reading
+    /// The largest coordinate of a body position that a kinematics file may
+    /// hold (m): a scene of a hand and a limb lies within it, while a
+    /// diverged simulation or a wrong unit does not.
+    constexpr double max_coordinate = 1000;
+
     /// Reads the groups of a kinematics file; HDF5 errors are ReadErrors.
     class KinematicsReader
     {
@@ -227,6 +233,21 @@ namespace softgrasp
         for (hsize_t i = 0; i < n; ++i)
         {
           result[i].position = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+          if (!(result[i].position.cwiseAbs().maxCoeff() <= max_coordinate))
+          {
+            std::ostringstream where;
+            where << result[i].position.transpose().format(
+                Eigen::IOFormat(6, Eigen::DontAlignCols, ", "));
+            fail("has the position (" + where.str() + ") m in '" + path +
+                     "/position' at row " + std::to_string(i) +
+                     ", farther than " + std::to_string(int(max_coordinate)) +
+                     " m from the origin in a coordinate",
+                 "write positions in metres, of a scene within " +
+                     std::to_string(int(max_coordinate)) +
+                     " m of the origin (a robot hand and a limb span less "
+                     "than 2 m); the simulation that wrote them diverged "
+                     "or used another unit");
+          }
           const Eigen::Quaterniond quaternion(
               q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
           if (quaternion.norm() < 1e-12)

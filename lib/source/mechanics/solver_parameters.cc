@@ -1,3 +1,4 @@
+#include <cmath>
 #include <deal.II/base/utilities.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
@@ -227,6 +228,12 @@ namespace softgrasp
         phase.step         = step[0];
         phase.minimum      = step.size() == 2 ? step[1] : default_minimum;
         const double begin = phases.empty() ? 0.0 : phases.back().end;
+        if (!std::isfinite(phase.end) || !std::isfinite(phase.step) ||
+            !std::isfinite(phase.minimum))
+          throw InputError(entry + ": '" + item +
+                           "' has a value that is not a finite number. "
+                           "Fix: give every phase a finite end and step, "
+                           "e.g. '0.5: 0.05; 1.5: 0.0125' (s).");
         if (!(phase.end > begin) || !(phase.step > 0) || !(phase.minimum > 0) ||
             phase.minimum > phase.step)
           throw InputError(entry + ": in '" + item +
@@ -553,18 +560,53 @@ namespace softgrasp
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /**
+     * Refuses an 'Output/Base name' that is not an ordinary file name
+     * prefix: empty, with '/' or a NUL, "." or ".." (hidden files such as
+     * '..pvd'), or too long for the file system once the longest suffix a
+     * run appends is added.
+     */
+    void check_base_name(const std::string &base_name)
+    {
+      // POSIX file systems allow 255 bytes per name; the longest suffix a
+      // run appends is about 40 bytes ("_history.csv.partial", a VTU
+      // file's step and rank numbers).
+      constexpr std::size_t longest_name = 255 - 40;
+      const std::string     entry =
+          "Parameter 'Output/Base name' is '" + base_name + "'";
+      const std::string named =
+          " (the files are named '<Base name>_00001.vtu', '<Base name>.pvd', "
+          "...). Fix: set a name such as 'solution', and choose the folder "
+          "with 'Output/Directory'.";
+      if (base_name.empty() || base_name.find('/') != std::string::npos ||
+          base_name.find('\0') != std::string::npos)
+        throw InputError(entry +
+                         ": it must be a non-empty file name prefix without "
+                         "'/'" +
+                         named);
+      if (base_name == "." || base_name == "..")
+        throw InputError(entry +
+                         ": it must be an ordinary file name prefix, not '.' "
+                         "or '..' (the files would be hidden, e.g. '" +
+                         base_name + ".pvd')" + named);
+      if (base_name.size() > longest_name)
+        throw InputError("Parameter 'Output/Base name' has " +
+                         std::to_string(base_name.size()) +
+                         " characters: a file name may have at most 255 "
+                         "bytes, and the run appends up to 40 to it, so the "
+                         "base name may have at most " +
+                         std::to_string(longest_name) + "." + named);
+    }
+  } // namespace
+
   void OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
     directory = prm.get("Directory");
     base_name = prm.get("Base name");
-    if (base_name.empty() || base_name.find('/') != std::string::npos)
-      throw InputError("Parameter 'Output/Base name' is '" + base_name +
-                       "': it must be a non-empty file name prefix without "
-                       "'/' (the files are named '<Base name>_00001.vtu', "
-                       "'<Base name>.pvd', ...). Fix: set a name such as "
-                       "'solution', and choose the folder with 'Output/"
-                       "Directory'.");
+    check_base_name(base_name);
     vtu_interval = prm.get_integer("VTU interval");
     verbose      = prm.get_bool("Verbose");
     existing_results =

@@ -37,6 +37,38 @@ namespace softgrasp
         "and directions as comma-separated coordinates in m.";
   } // namespace
 
+  namespace
+  {
+    /**
+     * The id @p text of a rule on a boundary (@p boundary) or a material:
+     * a whole number within deal.II's
+     * range of boundary (material) ids, 0 to 2^32 - 2 (the largest value
+     * marks interior faces, or no material); anything else would wrap
+     * around to another id.
+     */
+    unsigned int parse_id(const std::string &text,
+                          const bool         boundary,
+                          const std::string &problem)
+    {
+      const unsigned long long largest =
+          boundary ? numbers::internal_face_boundary_id - 1ull
+                   : numbers::invalid_material_id - 1ull;
+      const std::string trimmed = Utilities::trim(text);
+      const bool        digits =
+          !trimmed.empty() && trimmed.size() <= 12 &&
+          trimmed.find_first_not_of("0123456789") == std::string::npos;
+      if (!digits || std::stoull(trimmed) > largest)
+        throw InputError(problem + "has the id '" + trimmed +
+                         "', which is not a whole number from 0 to " +
+                         std::to_string(largest) + " (deal.II's " +
+                         (boundary ? "boundary" : "material") +
+                         " ids). Fix: give the id that the mesh file "
+                         "assigns." +
+                         grammar);
+      return static_cast<unsigned int>(std::stoull(trimmed));
+    }
+  } // namespace
+
   template <int dim>
   ManifoldRules<dim>::ManifoldRules(const std::string &text,
                                     const std::string &path)
@@ -58,15 +90,8 @@ namespace softgrasp
                          grammar);
       rule.target = target == "boundary" ? Rule::Target::boundary
                                          : Rule::Target::material;
-      try
-      {
-        rule.id = Utilities::string_to_int(id_text);
-      }
-      catch (...)
-      {
-        throw InputError(problem + "has the id '" + id_text +
-                         "', which is not a whole number." + grammar);
-      }
+      rule.id =
+          parse_id(id_text, rule.target == Rule::Target::boundary, problem);
       const auto [kind, arguments] = first_word(entry.substr(colon + 1));
       if (kind == "sphere")
       {

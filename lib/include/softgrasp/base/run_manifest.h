@@ -38,6 +38,13 @@ namespace softgrasp
     std::vector<std::string> read(const std::string &directory);
 
     /**
+     * Throws an InputError naming the manifest of @p directory and the fix
+     * if it exists but is not a regular file (a directory, a symbolic link
+     * to a list elsewhere, a device): a run never reads or follows it.
+     */
+    void check_regular(const std::string &directory);
+
+    /**
      * Start recording into @p directory's manifest: a new manifest (an
      * earlier one is replaced), or, if @p append, the existing one
      * continued (a resumed run).
