@@ -95,6 +95,24 @@ run_expect 1 integrator.log mpirun -np 2 "$exe" explicit.prm
 expect_clean_error integrator.log
 expect_message integrator.log "it holds 0 field(s) besides the displacement, this run needs 2"
 
+# A data file of another run (degree 1) copied into the checkpoint with its
+# manifest line: the run state binds the data files to its layout, so the
+# file is refused by name, whatever the manifest says.
+with_prm first.prm first-degree-1.prm "Finite element" "set Polynomial degree = 1"
+with_prm first-degree-1.prm degree-1.prm Output "set Directory = run-degree-1"
+run_expect 0 degree-1.log "$exe" degree-1.prm
+rm -rf run && cp -r pristine run
+for folder in checkpoint checkpoint.old; do
+  cp run-degree-1/checkpoint/mesh_fixed.data run/$folder/
+  line=$(grep "^file mesh_fixed.data " run-degree-1/checkpoint/manifest.txt)
+  sed -i "s@^file mesh_fixed.data .*@$line@" run/$folder/manifest.txt
+done
+cp -r run copied
+run_expect 1 copied.log "$exe" resume.prm
+expect_clean_error copied.log
+expect_message copied.log "its data file 'mesh_fixed.data' is not the one written with its run state (a 3D mesh of"
+diff -r copied run > /dev/null || { echo "FAIL: a refused resume changed the files"; exit 1; }
+
 # No checkpoint at all.
 rm -rf run
 run_expect 1 none.log "$exe" resume.prm

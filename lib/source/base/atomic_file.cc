@@ -60,6 +60,7 @@ namespace softgrasp
       if (error)
         throw std::runtime_error("Cannot rename '" + from + "' to '" + to +
                                  "': " + error.message() + ".");
+      RunManifest::record(to);
     }
 
     std::string check_written(const std::string &filename,

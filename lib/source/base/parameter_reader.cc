@@ -6,6 +6,7 @@
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_reader.h>
+#include <softgrasp/base/run_manifest.h>
 #include <sstream>
 
 namespace softgrasp
@@ -181,6 +182,7 @@ namespace softgrasp
       throw InputError("Cannot open the parameter file '" + filename +
                        "'. Fix: check the path; it is read relative to the "
                        "working directory.");
+    RunManifest::protect_input(filename);
     std::stringstream text;
     text << file.rdbuf();
     return text.str();

@@ -1,8 +1,10 @@
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <signal.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/run_directory.h>
@@ -92,23 +94,75 @@ namespace softgrasp
       return "Cannot lock the output directory '" + directory + "'.";
     }
 
-    /**
-     * The entries of @p directory that an earlier run wrote, as its
-     * manifest lists them (and the temporary files of those it was killed
-     * writing); never anything else.
-     */
-    std::vector<fs::path> earlier_results(const std::string &directory)
+    /// An earlier run's entries in a directory, by what may be done to them.
+    struct EarlierEntries
     {
-      std::vector<fs::path> found;
-      std::error_code       ignored;
-      for (const auto &name : RunManifest::read(directory))
-        for (const auto &candidate : {name, name + ".partial"})
+      std::vector<fs::path>    proven;   ///< listed and matching their proof
+      std::vector<std::string> unproven; ///< listed, but changed or unproven
+      std::vector<std::string> inputs;   ///< listed, but inputs of this run
+    };
+
+    /**
+     * The entries of @p directory that an earlier run's manifest lists,
+     * sorted by whether they can be proven that run's (and the temporary
+     * files of those it was killed writing, "<name>.partial", which only a
+     * run writes); an input of this run never counts as proven.
+     */
+    EarlierEntries earlier_results(const std::string &directory)
+    {
+      EarlierEntries  found;
+      std::error_code ignored;
+      const auto      listing = RunManifest::read(directory);
+      for (const auto &name : listing.names)
+      {
+        const fs::path path = fs::path(directory) / name;
+        if (fs::exists(fs::symlink_status(path, ignored)))
         {
-          const fs::path path = fs::path(directory) / candidate;
-          if (fs::exists(fs::symlink_status(path, ignored)))
-            found.push_back(path);
+          if (RunManifest::is_input(path.string()))
+            found.inputs.push_back(name);
+          else if (RunManifest::proven(directory, listing, name))
+            found.proven.push_back(path);
+          else
+            found.unproven.push_back(name);
         }
+        const fs::path partial = path.string() + ".partial";
+        if (fs::is_regular_file(fs::symlink_status(partial, ignored)))
+          found.proven.push_back(partial);
+      }
       return found;
+    }
+
+    /// Up to 8 of @p names, quoted, and how many more.
+    std::string some_of(const std::vector<std::string> &names)
+    {
+      std::string text;
+      for (std::size_t i = 0; i < names.size() && i < 8; ++i)
+        text += (i == 0 ? "'" : ", '") + names[i] + "'";
+      if (names.size() > 8)
+        text += " and " + std::to_string(names.size() - 8) + " more";
+      return text;
+    }
+
+    /// Say which listed entries stay where they are, and why.
+    void report_kept(const std::string    &directory,
+                     const EarlierEntries &found,
+                     std::ostream         &log)
+    {
+      if (!found.unproven.empty())
+        log << "Kept " << found.unproven.size()
+            << (found.unproven.size() == 1 ? " entry" : " entries") << " in '"
+            << directory << "' that its " << RunManifest::manifest_name
+            << " lists but that do not match the proof it records (changed "
+               "since, listed by hand, or written before proofs existed): "
+            << some_of(found.unproven)
+            << ". They are not moved or deleted; one that this run writes is "
+               "moved aside first. Delete them by hand if they are old "
+               "results."
+            << std::endl;
+      if (!found.inputs.empty())
+        log << "Kept " << some_of(found.inputs) << " in '" << directory
+            << "': listed in its " << RunManifest::manifest_name
+            << ", but an input of this run." << std::endl;
     }
 
     /// Apply @p policy to an earlier run's results; "" or an error.
@@ -119,26 +173,31 @@ namespace softgrasp
       const auto     found = earlier_results(directory);
       const fs::path manifest =
           fs::path(directory) / RunManifest::manifest_name;
-      if (found.empty())
+      if (found.proven.empty())
+      {
+        report_kept(directory, found, log);
         return "";
+      }
       if (policy == ExistingResults::refuse)
         return "The output directory '" + directory +
                "' holds the results of an earlier run (e.g. '" +
-               found.front().filename().string() + "'; its '" +
+               found.proven.front().filename().string() + "'; its '" +
                RunManifest::manifest_name +
                "' lists them all). Fix: set 'Output/Existing results' to "
                "'move aside' (kept in a subfolder) or 'replace' (deleted), "
                "choose another 'Output/Directory', or set 'Checkpoint/Resume "
                "= true' to continue that run.";
+      report_kept(directory, found, log);
       if (policy == ExistingResults::replace)
       {
-        for (const auto &path : found)
+        for (const auto &path : found.proven)
           fs::remove_all(path);
         fs::remove(manifest);
-        log << "Deleted " << found.size() << " file(s) and folder(s) of an "
-            << "earlier run in '" << directory
+        log << "Deleted " << found.proven.size()
+            << " file(s) and folder(s) of an earlier run in '" << directory
             << "' ('Output/Existing results = replace'; only what its "
-            << RunManifest::manifest_name << " listed, nothing else)."
+            << RunManifest::manifest_name
+            << " listed with a matching size and checksum, nothing else)."
             << std::endl;
         return "";
       }
@@ -149,15 +208,15 @@ namespace softgrasp
       const fs::path aside =
           fs::path(directory) / ("previous-run-" + std::to_string(n));
       fs::create_directory(aside);
-      for (const auto &path : found)
+      for (const auto &path : found.proven)
         fs::rename(path, aside / path.filename());
       fs::rename(manifest, aside / manifest.filename());
-      log << "Moved " << found.size() << " file(s) and folder(s) of an "
+      log << "Moved " << found.proven.size() << " file(s) and folder(s) of an "
           << "earlier run in '" << directory << "' to '" << aside.string()
           << "' (only what its " << RunManifest::manifest_name
-          << " listed; delete the folder when no longer needed; "
-             "'Output/Existing results' chooses what happens to earlier "
-             "results)."
+          << " listed with a matching size and checksum; delete the folder "
+             "when no longer needed; 'Output/Existing results' chooses what "
+             "happens to earlier results)."
           << std::endl;
       return "";
     }
@@ -167,7 +226,10 @@ namespace softgrasp
                              const std::string    &directory,
                              const ExistingResults existing,
                              const bool            resume,
+                             const std::string    &base_name,
                              std::ostream         &log)
+      : base_name(base_name)
+      , log(&log)
   {
     std::string error;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
@@ -193,7 +255,7 @@ namespace softgrasp
             error = clear_earlier_results(directory, existing, log);
           if (error.empty())
           {
-            RunManifest::open(directory, resume);
+            RunManifest::open(directory, resume, log);
             manifest_directory = directory;
           }
         }
@@ -218,10 +280,45 @@ namespace softgrasp
     }
   }
 
+  void RunDirectory::report_strangers() const
+  {
+    const auto listed = RunManifest::written(manifest_directory);
+    const std::set<std::string> own(listed.begin(), listed.end());
+    std::vector<std::string>    strangers;
+    for (const auto &entry : fs::directory_iterator(manifest_directory))
+    {
+      const std::string name = entry.path().filename().string();
+      if ((name.rfind(base_name + "_", 0) == 0 ||
+           name.rfind(base_name + ".", 0) == 0) &&
+          own.count(name) == 0 && !RunManifest::is_input(entry.path()))
+        strangers.push_back(name);
+    }
+    std::sort(strangers.begin(), strangers.end());
+    if (!strangers.empty())
+      *log << "Warning: '" << manifest_directory << "' also holds "
+           << strangers.size()
+           << " entries named like this run's output but not written by it "
+              "(kept as they were, and not in this run's PVD): "
+           << some_of(strangers)
+           << ". Fix: move or delete them by hand if they are old results."
+           << std::endl;
+  }
+
   RunDirectory::~RunDirectory()
   {
     if (!manifest_directory.empty())
+    {
+      try
+      {
+        if (!base_name.empty())
+          report_strangers();
+      }
+      catch (const std::exception &)
+      {
+        // a listing that fails changes nothing: the run is over
+      }
       RunManifest::close(manifest_directory);
+    }
     if (!lock_file.empty())
       unlink(lock_file.c_str());
   }

@@ -132,7 +132,7 @@ namespace softgrasp
         write_surface(all, directory + "/" + base + "_surface.dat");
     write_geoms(kinematics, time, directory + "/" + base + "_geoms.dat");
     {
-      std::ofstream gp(directory + "/" + base + "_picture.gnuplot");
+      AtomicFile::TextFile gp(directory + "/" + base + "_picture.gnuplot");
       gp << "set terminal pngcairo size 1100,900 noenhanced\n"
          << "set output '" << AtomicFile::temporary_name(base + "_picture.png")
          << "'\n"
@@ -147,6 +147,7 @@ namespace softgrasp
          << "splot '" << base
          << "_surface.dat' using 1:2:3:4 with pm3d notitle, '" << base
          << "_geoms.dat' using 1:2:3 with lines lc rgb '#202020' notitle\n";
+      gp.commit();
     }
     if (run_gnuplot(
             directory, base + "_picture.gnuplot", {base + "_picture.png"}, log))
@@ -169,7 +170,7 @@ namespace softgrasp
                         std::ostream                   &log)
   {
     {
-      std::ofstream gp(directory + "/" + base + "_forces.gnuplot");
+      AtomicFile::TextFile gp(directory + "/" + base + "_forces.gnuplot");
       gp << "set terminal pngcairo size 1400,650 noenhanced\n"
          << "set output '" << AtomicFile::temporary_name(base + "_forces.png")
          << "'\n"
@@ -191,6 +192,7 @@ namespace softgrasp
         gp << "\n";
       }
       gp << "unset multiplot\n";
+      gp.commit();
     }
     if (run_gnuplot(
             directory, base + "_forces.gnuplot", {base + "_forces.png"}, log))

@@ -2,6 +2,7 @@
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/base/parameter_reader.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/grasp/indentation_study.h>
 
 namespace softgrasp
@@ -69,7 +70,9 @@ namespace softgrasp
     const CheckedSection section(prm, "Indentation study");
     kinematics_file = prm.get("Kinematics file");
     run_rigid_stage = prm.get("Rigid stage") == "run";
-    object_body     = Utilities::trim(prm.get("Object body"));
+    if (!run_rigid_stage) // read, not written: an input of the run
+      RunManifest::protect_input(kinematics_file);
+    object_body = Utilities::trim(prm.get("Object body"));
     placement = prm.get("Tissue placement") == "position" ? Placement::position
                                                           : Placement::pose;
     phases    = Utilities::split_string_list(prm.get("Phases"));

@@ -252,7 +252,7 @@ namespace softgrasp
                               const std::string  &directory,
                               const std::string  &stem)
     {
-      std::ofstream gp(directory + "/" + stem + "_section.gnuplot");
+      AtomicFile::TextFile gp(directory + "/" + stem + "_section.gnuplot");
       gp << "set terminal pngcairo size 1800,640 noenhanced\n"
          << "set output '" << AtomicFile::temporary_name(stem + "_section.png")
          << "'\n"
@@ -301,6 +301,7 @@ namespace softgrasp
          << "' using 1:2 with filledcurves closed fc rgb '#303030' "
             "title 'finger links', '' using 1:2:(0) with points pt -1 lc "
             "palette notitle\nunset multiplot\n";
+      gp.commit();
     }
 
     /// The skin outline before and after, with the indented links.
@@ -308,7 +309,7 @@ namespace softgrasp
                            const std::string &directory,
                            const std::string &stem)
     {
-      std::ofstream skin(directory + "/" + stem + "_skin.gnuplot");
+      AtomicFile::TextFile skin(directory + "/" + stem + "_skin.gnuplot");
       skin << "set terminal pngcairo size 900,800 noenhanced\n"
            << "set output '" << AtomicFile::temporary_name(stem + "_skin.png")
            << "'\nset title 'Skin outline before and after the "
@@ -324,6 +325,7 @@ namespace softgrasp
            << stem << "_links_indented.dat"
            << "' using 1:2 with lines lc rgb '#303030' title 'finger links "
               "(indented)'\n";
+      skin.commit();
     }
   } // namespace
 

@@ -87,6 +87,46 @@ namespace softgrasp
       return layout;
     }
 
+    /// The files of the checkpoint folder @p path that p4est and the
+    /// solution transfer wrote, each with "<size> <checksum>".
+    std::vector<std::pair<std::string, std::string>>
+    data_files_in(const std::string &path)
+    {
+      std::vector<std::pair<std::string, std::string>> files;
+      for (const auto &entry : fs::directory_iterator(path))
+      {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file() && name != manifest_name &&
+            name != "state.txt")
+          files.emplace_back(name, entry_fingerprint(entry.path()));
+      }
+      std::sort(files.begin(), files.end());
+      return files;
+    }
+
+    /**
+     * Why the data files in @p path are not the ones written with @p state
+     * (a file copied from another checkpoint or run, with its manifest
+     * line); "" if they are, or if @p state predates the record.
+     */
+    std::string foreign_data(const std::string &path, const RunState &state)
+    {
+      const CheckpointLayout &l = state.layout;
+      for (const auto &[name, proof] : state.data_files)
+        if (const auto found = entry_fingerprint(fs::path(path) / name);
+            found != proof)
+          return "its data file '" + name + "' is not the one written with " +
+                 "its run state (a " + std::to_string(l.dim) + "D mesh of " +
+                 std::to_string(l.n_cells) + " cells, degree " +
+                 std::to_string(l.degree) + " elements, " +
+                 std::to_string(l.n_dofs) + " dofs, " +
+                 std::to_string(l.n_fields) + " field(s)): its size and " +
+                 "checksum are '" + (found.empty() ? "missing" : found) +
+                 "', the state records '" + proof +
+                 "' (a file copied from another checkpoint or run)";
+      return "";
+    }
+
     /// Why data of layout @p saved cannot be read into a run of layout
     /// @p run; "" if they can. @p compare_cells: after the mesh was loaded.
     std::string mismatch(const CheckpointLayout &saved,
@@ -233,14 +273,14 @@ namespace softgrasp
     return "";
   }
 
-  template <int dim>
-  std::string Checkpoint<dim>::complete(const RunState &state) const
+  template <int dim> std::string Checkpoint<dim>::complete(RunState state) const
   {
     const std::string target   = directory + "/checkpoint";
     const std::string partial  = directory + "/checkpoint.new";
     const std::string previous = directory + "/checkpoint.old";
     try
     {
+      state.data_files = data_files_in(partial);
       {
         std::ofstream                 out(partial + "/state.txt");
         boost::archive::text_oarchive archive(out);
@@ -255,8 +295,10 @@ namespace softgrasp
       {
         fs::remove_all(previous);
         fs::rename(target, previous);
+        RunManifest::record(previous);
       }
       fs::rename(partial, target);
+      RunManifest::record(target);
     }
     catch (const std::exception &e)
     {
@@ -426,6 +468,14 @@ namespace softgrasp
                        "of the run that wrote the data, or set "
                        "'Checkpoint/Resume = false'.");
     };
+    const bool root =
+        Utilities::MPI::this_mpi_process(tria.get_communicator()) == 0;
+    if (const auto why = Utilities::MPI::broadcast(
+            tria.get_communicator(),
+            root ? foreign_data(source, state) : std::string(),
+            0);
+        !why.empty())
+      refuse(why);
     const bool       recorded = state.layout.dim > 0; // not before format 4.1
     CheckpointLayout run;
     run.dim                = dim;

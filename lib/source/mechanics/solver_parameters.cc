@@ -552,11 +552,13 @@ namespace softgrasp
         Patterns::Selection(selection(existing_results_names)),
         "What a new run (not a resume) does with the results of an earlier "
         "run in 'Directory', that is with the files and folders listed in "
-        "that run's manifest 'softgrasp-run-files.txt': 'move aside' moves "
-        "them into a subfolder 'previous-run-<n>', 'replace' deletes them, "
-        "'refuse' stops with an error. A directory never mixes the files of "
-        "two runs, and nothing that a run did not write (inputs, notes, "
-        "folders) is ever moved or deleted.");
+        "that run's manifest 'softgrasp-run-files.txt' whose size and "
+        "checksum match what it records: 'move aside' moves them into a "
+        "subfolder 'previous-run-<n>', 'replace' deletes them, 'refuse' "
+        "stops with an error. Nothing that a run cannot prove it wrote "
+        "(inputs, notes, folders, edited results) is ever deleted or "
+        "written over: a file in the way is moved into 'moved-aside-<n>' "
+        "first, and the log says so (doc/reliability.md).");
     prm.leave_subsection();
   }
 

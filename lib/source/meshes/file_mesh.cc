@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/meshes/file_mesh.h>
 #include <softgrasp/meshes/mesh_import.h>
 
@@ -44,6 +45,7 @@ namespace softgrasp
   {
     prm.enter_subsection("File");
     file_name = Utilities::trim(prm.get("File name"));
+    RunManifest::protect_input(file_name);
     scale     = prm.get_double("Scale");
     manifolds = std::make_unique<ManifoldRules<dim>>(prm.get("Manifolds"),
                                                      "Mesh/File/Manifolds");

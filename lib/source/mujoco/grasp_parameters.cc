@@ -1,6 +1,7 @@
 #include <filesystem>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
 
 namespace softgrasp
@@ -161,6 +162,7 @@ namespace softgrasp
     if (!scene_file.empty() && scene_file[0] != '/' && !base_directory.empty())
       scene_file =
           (std::filesystem::path(base_directory) / scene_file).string();
+    RunManifest::protect_input(scene_file);
     object_body    = prm.get("Object body");
     base_body      = prm.get("Hand base body");
     const auto p   = section.get_number_list("Base position");

@@ -226,7 +226,7 @@ namespace softgrasp
         rigid, fe, grip_link, directory + "/" + base + "_figure.dat");
     const std::string data = "'" + base + "_figure.dat'";
     {
-      std::ofstream gp(directory + "/" + base + "_figure.gnuplot");
+      AtomicFile::TextFile gp(directory + "/" + base + "_figure.gnuplot");
       gp << "set terminal pngcairo size 1500,700 noenhanced\n"
          << "set output '" << AtomicFile::temporary_name(base + "_figure.png")
          << "'\n"
@@ -272,6 +272,7 @@ namespace softgrasp
            << data << " index 1 using 1:3 with linespoints pt 7 lc rgb "
            << "'black' title 'normal'\n";
       gp << "unset multiplot\n";
+      gp.commit();
     }
     run_gnuplot(
         directory, base + "_figure.gnuplot", {base + "_figure.png"}, log);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <softgrasp/base/atomic_file.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/base/plane_strain.h>
@@ -337,7 +338,7 @@ namespace softgrasp
                                     const std::string &surface_file) const
   {
     {
-      std::ofstream out(tissue_file);
+      AtomicFile::TextFile out(tissue_file);
       out << std::setprecision(8) << "material_id,tissue,volume_m3"
           << location_columns("e_max") << location_columns("e_min")
           << ",E_GL_max,E_GL_min,log_strain_max,log_strain_min";
@@ -362,10 +363,11 @@ namespace softgrasp
           out << ',' << v;
         out << '\n';
       }
+      out.commit();
     }
     if (!has_contact)
       return;
-    std::ofstream out(surface_file);
+    AtomicFile::TextFile out(surface_file);
     out << std::setprecision(8)
         << "pressure_threshold_Pa,area_above_m2,contact_area_m2"
         << location_columns("pressure_max_Pa") << '\n';
@@ -376,6 +378,7 @@ namespace softgrasp
       write_location(out, pressure.maximum);
       out << '\n';
     }
+    out.commit();
   }
 
   namespace

@@ -62,8 +62,12 @@ namespace softgrasp
   template <int dim>
   void RunRecorder<dim>::claim_directory(MPI_Comm comm, const bool resume)
   {
-    run_directory = std::make_unique<RunDirectory>(
-        comm, output.directory, output.existing_results, resume, std::cout);
+    run_directory = std::make_unique<RunDirectory>(comm,
+                                                   output.directory,
+                                                   output.existing_results,
+                                                   resume,
+                                                   output.base_name,
+                                                   std::cout);
   }
 
   template <int dim> void RunRecorder<dim>::release_directory()

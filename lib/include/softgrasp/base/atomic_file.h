@@ -1,6 +1,7 @@
 #ifndef softgrasp_base_atomic_file_h
 #define softgrasp_base_atomic_file_h
 
+#include <sstream>
 #include <string>
 
 namespace softgrasp
@@ -37,6 +38,30 @@ namespace softgrasp
     std::string check_written(const std::string &filename,
                               const std::string &ending,
                               bool               text);
+
+    /**
+     * A text output file built in memory and written whole by commit()
+     * (write() above: listed in the run's manifest, atomic, with its
+     * proof): the writer of a CSV file or a gnuplot script uses it as it
+     * would an std::ofstream, then commits it.
+     */
+    class TextFile : public std::ostringstream
+    {
+    public:
+      explicit TextFile(std::string filename)
+          : filename(std::move(filename))
+      {
+      }
+
+      /// Write the text so far to the file; throws on I/O failure.
+      void commit() const
+      {
+        AtomicFile::write(filename, str());
+      }
+
+    private:
+      std::string filename;
+    };
   } // namespace AtomicFile
 } // namespace softgrasp
 

@@ -57,6 +57,14 @@ namespace softgrasp
     /// What the data files hold (recorded since class version 1).
     CheckpointLayout layout;
 
+    /**
+     * The data files written with this state (the p4est mesh and the
+     * fields), each with "<size> <checksum>" (since class version 2): the
+     * state binds them to its layout, so a data file of another checkpoint
+     * or run is refused by name on resume, whatever the manifest says.
+     */
+    std::vector<std::pair<std::string, std::string>> data_files;
+
     template <class Archive>
     void serialize(Archive &archive, const unsigned int version)
     {
@@ -65,6 +73,8 @@ namespace softgrasp
               &integrator_state &contact_force_records;
       if (version >= 1)
         archive &layout;
+      if (version >= 2)
+        archive &data_files;
     }
   };
 
@@ -121,9 +131,10 @@ namespace softgrasp
     /// @p estimate bytes) and create the empty "checkpoint.new"; "" or the
     /// error.
     std::string prepare_folder(std::uintmax_t estimate) const;
-    /// Rank 0: write @p state and the manifest into "checkpoint.new" and
-    /// rename it into place, keeping the previous one; "" or the error.
-    std::string complete(const RunState &state) const;
+    /// Rank 0: write @p state (with the data files' proofs) and the
+    /// manifest into "checkpoint.new" and rename it into place, keeping the
+    /// previous one; "" or the error.
+    std::string complete(RunState state) const;
     /// The checkpoint to resume from, validated on rank 0, on all ranks.
     std::string select(MPI_Comm comm, std::ostream &log) const;
     /// Why @p path cannot be used ("" if it can); settings are not compared.
@@ -137,6 +148,6 @@ namespace softgrasp
   };
 } // namespace softgrasp
 
-BOOST_CLASS_VERSION(softgrasp::RunState, 1)
+BOOST_CLASS_VERSION(softgrasp::RunState, 2)
 
 #endif
