@@ -11,7 +11,16 @@
 //    closing's latest state (which lies beyond it), and equals the first
 //    sweep's level 1; level 2's record is untouched;
 //  - level 2's directory deleted: closed again from level 1's closed state;
-//    it equals the first sweep's level 2.
+//    it equals the first sweep's level 2;
+//  - level 1's closing.h5 deleted (its level.h5 kept): level 1 is computed
+//    again and equals the first sweep's;
+//  - both level directories and closing_progress.txt deleted (a sweep
+//    killed while closing level 2, as far as the files tell): the closing's
+//    latest checkpoint lies beyond both, so both are closed again from the
+//    start and equal the first sweep's;
+//  - the closed states of levels 1 and 2 swapped, both still to pull: each
+//    is refused against its record's checksum, both are closed again and
+//    pulled from their own states, equal to the first sweep's.
 #include "../tests.h"
 #include "grasp_helpers.h"
 
@@ -97,5 +106,56 @@ main(int argc, char **argv)
                      "state below it (level 1 from the start, level 2 from "
                      "level 1's), equal to the first sweep's, the other "
                      "level untouched"
+                  << std::endl;
+
+  const auto level_dir = [&](const unsigned int k)
+  { return directory + "/level_0" + std::to_string(k); };
+  // runs the sweep after @p damage; both levels equal the first sweep's
+  const auto recovers = [&](const std::string &what, auto damage)
+  {
+    damage();
+    CoarseSweep s(directory);
+    s.sweep->run_fe(s.log);
+    const auto &levels = s.sweep->fe_levels();
+    SG_CHECK(levels.size() == 2 && levels[0].pulled && levels[1].pulled,
+             what + ": both levels pulled");
+    for (const unsigned int k : {1u, 2u})
+      SG_CHECK(softgrasp_tests::level_difference(levels[k - 1], full[k - 1]) <
+                   1e-9,
+               what + ": level " + std::to_string(k) +
+                   " equals the first sweep's");
+    return s.log.str();
+  };
+  recovers("closing.h5 of level 1 deleted",
+           [&] { fs::remove(level_dir(1) + "/closing.h5"); });
+  dealii::deallog << "closing.h5 of level 1 deleted: level 1 computed again, "
+                     "equal to the first sweep's"
+                  << std::endl;
+  recovers("both levels and closing_progress.txt deleted",
+           [&]
+           {
+             fs::remove_all(level_dir(1));
+             fs::remove_all(level_dir(2));
+             fs::remove(directory + "/closing_progress.txt");
+           });
+  dealii::deallog << "both levels and the closing progress deleted: closed "
+                     "again from the start, equal to the first sweep's"
+                  << std::endl;
+  const std::string log = recovers(
+      "closed states swapped",
+      [&]
+      {
+        for (const unsigned int k : {1u, 2u})
+          fs::remove(level_record(k));
+        fs::rename(level_dir(1) + "/closed", directory + "/closed_1");
+        fs::rename(level_dir(2) + "/closed", level_dir(1) + "/closed");
+        fs::rename(directory + "/closed_1", level_dir(2) + "/closed");
+      });
+  SG_CHECK(log.find("Level 1: its closed state '" + level_dir(1) +
+                    "/closed' is not the one its record") != std::string::npos,
+           "the swapped state is named");
+  dealii::deallog << "closed states of levels 1 and 2 swapped: each refused "
+                     "against its record, both closed again, equal to the "
+                     "first sweep's"
                   << std::endl;
 }

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <map>
 #include <softgrasp/base/atomic_file.h>
+#include <softgrasp/base/file_checksum.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/grasp/pull_sweep_study.h>
@@ -215,21 +216,44 @@ namespace softgrasp
     return level_directory(k) + "/closing.h5";
   }
 
+  std::string PullSweepStudy::closed_state_of(const unsigned int k) const
+  {
+    const std::string manifest =
+        level_directory(k) + "/closed/checkpoint/manifest.txt";
+    return std::filesystem::is_regular_file(manifest) ? file_checksum(manifest)
+                                                      : "";
+  }
+
+  void PullSweepStudy::forget_level(const unsigned int k) const
+  {
+    for (const auto &file : {record_file(k), closing_file(k)})
+      remove_on_root(comm, file);
+    remove_on_root(comm, level_directory(k) + "/closed");
+  }
+
   std::vector<std::optional<FeGripLevel>>
-  PullSweepStudy::read_records(const std::vector<double> &forces) const
+  PullSweepStudy::read_records(const std::vector<double> &forces,
+                               std::ostream              *log) const
   {
     // Every rank reads the records (all need the levels' times).
     std::vector<std::optional<FeGripLevel>> records(forces.size());
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     for (unsigned int k = 1; k <= forces.size(); ++k)
     {
-      const std::string file = std::filesystem::exists(record_file(k))
-                                   ? record_file(k)
-                                   : closing_file(k);
-      if (!std::filesystem::exists(file))
+      // no closing record, no level (doc/studies.md: deleting closing.h5
+      // computes the level again), whatever else is left of it
+      if (!std::filesystem::exists(closing_file(k)))
+      {
+        if (log != nullptr && std::filesystem::exists(level_directory(k)))
+          forget_level(k);
         continue;
-      FeGripLevel level = read_grip_level(file);
-      const auto  fix   = ". Fix: start afresh in another 'Output/Directory', "
-                          "or delete '" +
+      }
+      const std::string file  = std::filesystem::exists(record_file(k))
+                                    ? record_file(k)
+                                    : closing_file(k);
+      FeGripLevel       level = read_grip_level(file);
+      const auto fix = ". Fix: start afresh in another 'Output/Directory', "
+                       "or delete '" +
                        output + "/fe_closing' and the level_* directories.";
       const std::string change = changed_setting(level.settings, settings);
       if (!change.empty())
@@ -243,6 +267,19 @@ namespace softgrasp
             " N (its levels or the rigid stage changed)" + fix);
       if (level.state_level == 0 || level.state_level > k)
         level.state_level = k;
+      if (log != nullptr && level.reached && !level.finished() &&
+          !level.closed_state.empty() &&
+          closed_state_of(k) != level.closed_state)
+      {
+        if (root)
+          *log << "Level " << k << ": its closed state '" << level_directory(k)
+               << "/closed' is not the one its record '" << file
+               << "' was closed to (its checksum differs: swapped with or "
+                  "copied from another level, or changed); the level is "
+                  "closed again.\n";
+        forget_level(k);
+        continue;
+      }
       records[k - 1] = std::move(level);
     }
     return records;
@@ -298,12 +335,12 @@ namespace softgrasp
       }
   }
 
-  unsigned int PullSweepStudy::closing_progress() const
+  int PullSweepStudy::closing_progress() const
   {
-    unsigned int  k = 0;
+    int           k = -1;
     std::ifstream in(output + "/closing_progress.txt");
-    if (!(in >> k))
-      k = 0;
+    if (!(in >> k) || k < 0)
+      k = -1;
     return k;
   }
 
@@ -327,7 +364,9 @@ namespace softgrasp
     for (unsigned int j = m - 1; j >= 1; --j)
       if (records[j - 1] && records[j - 1]->reached &&
           records[j - 1]->state_level == j &&
-          std::filesystem::exists(level_directory(j) + "/closed/checkpoint"))
+          std::filesystem::exists(level_directory(j) + "/closed/checkpoint") &&
+          (records[j - 1]->closed_state.empty() ||
+           records[j - 1]->closed_state == closed_state_of(j)))
       {
         copy_checkpoint(comm, level_directory(j) + "/closed", closing);
         set_closing_progress(j);
@@ -341,9 +380,10 @@ namespace softgrasp
   PullSweepStudy::close_to_levels(const KinematicsData      &kinematics,
                                   const std::string         &grip_link,
                                   const std::vector<double> &forces,
+                                  std::ostream              &log,
                                   const double               step)
   {
-    auto records = read_records(forces);
+    auto records = read_records(forces, &log);
     drop_shared(records);
     const auto missing = std::find_if(
         records.begin(), records.end(), [](const auto &r) { return !r; });
@@ -371,12 +411,14 @@ namespace softgrasp
 
     // A killed sweep goes on from the closing's latest checkpoint, unless
     // that may lie beyond the first level without a record (its record was
-    // deleted, or a later level has one): then from a state below it.
+    // deleted, a later level has one, or the progress file that says how
+    // far the closing went is gone): then from a state below it.
     const unsigned int m     = missing - records.begin() + 1;
     const bool         later = std::any_of(
         missing, records.end(), [](const auto &r) { return r.has_value(); });
-    bool started = false;
-    if (later || closing_progress() >= m)
+    const int progress = closing_progress();
+    bool      started  = false;
+    if (later || progress < 0 || progress >= static_cast<int>(m))
       started = restart_closing_below(m, records);
     else
     {
@@ -415,9 +457,12 @@ namespace softgrasp
       level.reached       = levels[k - 1].reached;
       level.state_level   = levels[k - 1].state_level;
       if (level.reached)
+      {
         copy_checkpoint(comm,
                         level_directory(level.state_level) + "/closed",
                         level_directory(k + 1) + "/closed");
+        level.closed_state = closed_state_of(k + 1);
+      }
     }
     else
     {
@@ -438,9 +483,12 @@ namespace softgrasp
       level.time    = latest.time;
       level.reached = solver->stopped_by_criterion();
       if (level.reached)
+      {
         copy_checkpoint(comm,
                         inputs.solver.output.directory,
                         level_directory(k + 1) + "/closed");
+        level.closed_state = closed_state_of(k + 1);
+      }
     }
     record(level, k + 1);
     return level;
@@ -500,37 +548,38 @@ namespace softgrasp
 
   void write_grip_level(const FeGripLevel &level, const std::string &filename)
   {
-    Hdf5Record::write(filename,
-                      [&](Hdf5Record::Group &file)
-                      {
-                        file.attribute("schema",
-                                       std::string("softgrasp grip level"));
-                        file.attribute("settings", level.settings);
-                        file.attribute("target_force", level.target_force);
-                        file.attribute("reached_force", level.reached_force);
-                        file.attribute("time", level.time);
-                        file.attribute("reached", int(level.reached));
-                        file.attribute("pulled", int(level.pulled));
-                        // HDF5 refuses empty strings: a failure is stored with
-                        // a prefix
-                        file.attribute("failure", "failure: " + level.failure);
-                        file.attribute("balance", level.balance);
-                        file.attribute("penetration", level.penetration);
-                        file.attribute("state_level", int(level.state_level));
-                        file.attribute("links", int(level.links.size()));
-                        for (std::size_t i = 0; i < level.links.size(); ++i)
-                        {
-                          const auto &link = level.links[i];
-                          auto group = file.group("link_" + std::to_string(i));
-                          group.attribute("name", link.link);
-                          std::vector<double> force;
-                          for (const auto &f : link.force)
-                            force.insert(force.end(), {f[0], f[1], f[2]});
-                          group.vector("force", force);
-                          for (const auto &[name, values] : series(link))
-                            group.vector(name, *values);
-                        }
-                      });
+    Hdf5Record::write(
+        filename,
+        [&](Hdf5Record::Group &file)
+        {
+          file.attribute("schema", std::string("softgrasp grip level"));
+          file.attribute("settings", level.settings);
+          file.attribute("target_force", level.target_force);
+          file.attribute("reached_force", level.reached_force);
+          file.attribute("time", level.time);
+          file.attribute("reached", int(level.reached));
+          file.attribute("pulled", int(level.pulled));
+          // HDF5 refuses empty strings: a failure is stored with
+          // a prefix
+          file.attribute("failure", "failure: " + level.failure);
+          file.attribute("balance", level.balance);
+          file.attribute("penetration", level.penetration);
+          file.attribute("state_level", int(level.state_level));
+          file.attribute("closed_state", "state: " + level.closed_state);
+          file.attribute("links", int(level.links.size()));
+          for (std::size_t i = 0; i < level.links.size(); ++i)
+          {
+            const auto &link  = level.links[i];
+            auto        group = file.group("link_" + std::to_string(i));
+            group.attribute("name", link.link);
+            std::vector<double> force;
+            for (const auto &f : link.force)
+              force.insert(force.end(), {f[0], f[1], f[2]});
+            group.vector("force", force);
+            for (const auto &[name, values] : series(link))
+              group.vector(name, *values);
+          }
+        });
   }
 
   FeGripLevel read_grip_level(const std::string &filename)
@@ -570,7 +619,15 @@ namespace softgrasp
                                   ? static_cast<unsigned int>(
                                         std::max(0.0, number("state_level")))
                                   : 0;
-          const int n       = static_cast<int>(number("links"));
+          if (file.has_attribute("/", "closed_state"))
+          {
+            const std::string state = file.string_attribute("", "closed_state");
+            if (state.rfind("state: ", 0) != 0)
+              throw std::runtime_error(
+                  "its attribute 'closed_state' is damaged");
+            level.closed_state = state.substr(7);
+          }
+          const int n = static_cast<int>(number("links"));
           for (int i = 0; i < n; ++i)
           {
             const std::string group = "link_" + std::to_string(i);

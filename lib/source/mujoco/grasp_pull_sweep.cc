@@ -261,7 +261,7 @@ namespace softgrasp
       forces.resize(up_to);
     const auto start = std::chrono::steady_clock::now();
     fe               = study.close_to_levels(
-        kinematics, sweep.grip_label, forces, sweep.closing_step);
+        kinematics, sweep.grip_label, forces, log, sweep.closing_step);
     if (!root)
       return;
     for (std::size_t k = 0; k < fe.size(); ++k)

@@ -23,6 +23,11 @@ namespace softgrasp
     /// level below when the closing reached both in one state (or neither);
     /// 0 in records of older sweeps (taken as its own).
     unsigned int state_level = 0;
+    /// The checksum of the closed state's checkpoint manifest (which holds
+    /// the checksum of every file of that state) when the level was closed:
+    /// a pull starts only from the state its record was closed to. Empty if
+    /// not reached, or in records of older sweeps (not checked).
+    std::string closed_state;
     /// At the end of the pull: |sum F_links - R| / max |F_link| and the
     /// deepest penetration of a link (m).
     double balance = 0, penetration = 0;
@@ -93,6 +98,7 @@ namespace softgrasp
     std::vector<FeGripLevel> close_to_levels(const KinematicsData &kinematics,
                                              const std::string    &grip_link,
                                              const std::vector<double> &forces,
+                                             std::ostream              &log,
                                              const double step = 0);
 
     /// The pull of @p level (1-based number @p k), which close_to_levels()
@@ -134,9 +140,21 @@ namespace softgrasp
     void record(const FeGripLevel &level, const unsigned int k) const;
 
   private:
-    /// Every level's record (the full one, else the closing one), or none.
+    /**
+     * Every level's record (the full one, else the closing one), or none.
+     * A level without its closing record has none (its other files are
+     * removed: it is computed again). With @p log, a level still to pull
+     * whose closed state is not the one its record was closed to (swapped,
+     * copied from another level) loses its record too, and @p log says so.
+     */
     std::vector<std::optional<FeGripLevel>>
-    read_records(const std::vector<double> &forces) const;
+    read_records(const std::vector<double> &forces,
+                 std::ostream              *log = nullptr) const;
+    /// Remove level @p k's records and closed state (rank 0; all wait).
+    void forget_level(const unsigned int k) const;
+    /// The checksum of level @p k's closed state's checkpoint manifest, ""
+    /// if it has none (FeGripLevel::closed_state).
+    std::string closed_state_of(const unsigned int k) const;
     /// Drop the records of the levels that share the state of a level
     /// without one (they are closed again together), with their files.
     void drop_shared(std::vector<std::optional<FeGripLevel>> &records) const;
@@ -147,9 +165,10 @@ namespace softgrasp
         const unsigned int                             m,
         const std::vector<std::optional<FeGripLevel>> &records) const;
     /// The highest level the closing's latest checkpoint may have passed
-    /// (<output>/closing_progress.txt; 0 if none), and its update.
-    unsigned int closing_progress() const;
-    void         set_closing_progress(const unsigned int k) const;
+    /// (<output>/closing_progress.txt), -1 if that file is missing or
+    /// damaged (then it may have passed any), and its update.
+    int  closing_progress() const;
+    void set_closing_progress(const unsigned int k) const;
     /// Close to level @p k (0-based) of @p forces from where the closing
     /// is; @p levels holds the levels below it.
     FeGripLevel close_one(SolverInputs<3>                             &inputs,
