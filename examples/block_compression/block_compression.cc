@@ -40,6 +40,7 @@ main(int argc, char **argv)
 
   softgrasp::SolverProgram program;
   program.default_parameter_file = "block_compression.prm";
+  program.name                   = "block_compression";
   program.report_3d              = [](const softgrasp::Simulation<3> &solver)
   {
     const auto       &history = solver.history();

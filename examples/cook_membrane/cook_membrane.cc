@@ -58,6 +58,7 @@ main(int argc, char **argv)
   // solver, and turns bad input or a failed run into a clear message.
   softgrasp::SolverProgram program;
   program.default_parameter_file = "cook_membrane.prm";
+  program.name                   = "cook_membrane";
 
   // After the run: compare the tip deflection with the published values
   // (3D) or the plane-strain limit (2D).

@@ -38,6 +38,7 @@ main(int argc, char **argv)
 
   softgrasp::SolverProgram program;
   program.default_parameter_file = "frictional_drag.prm";
+  program.name                   = "frictional_drag";
   program.report_2d              = [](const softgrasp::Simulation<2> &solver)
   { softgrasp::report_contact_forces(solver, "drag_forces", std::cout); };
   program.report_3d = [](const softgrasp::Simulation<3> &solver)

@@ -109,6 +109,7 @@ main(int argc, char **argv)
 
   softgrasp::SolverProgram program;
   program.default_parameter_file = "hertz_indentation.prm";
+  program.name                   = "hertz_indentation";
   program.report_3d              = report;
   return program.run(argc, argv);
 }

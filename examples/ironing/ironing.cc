@@ -39,6 +39,7 @@ main(int argc, char **argv)
 
   softgrasp::SolverProgram program;
   program.default_parameter_file = "ironing.prm";
+  program.name                   = "ironing";
   program.report_2d              = [](const softgrasp::Simulation<2> &solver)
   { softgrasp::report_contact_forces(solver, "ironing_forces", std::cout); };
   program.report_3d = [](const softgrasp::Simulation<3> &solver)

@@ -39,6 +39,8 @@
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/gnuplot.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_reader.h>
+#include <softgrasp/base/program_arguments.h>
 #include <softgrasp/materials/homogeneous_loading.h>
 #include <softgrasp/materials/material_library.h>
 #include <softgrasp/materials/tissue_presets.h>
@@ -206,14 +208,27 @@ main(int argc, char **argv)
 {
   try
   {
-    const std::string prm_file = argc > 1 ? argv[1] : "tissue_curves.prm";
-    ParameterHandler  prm;
-    Parameters        parameters;
+    ParameterReader::set_program("tissue_curves", {});
+    const auto arguments =
+        ProgramArguments::parse(argc, argv, "tissue_curves.prm");
+    const int exit_code = arguments.handle(
+        argv[0],
+        "Stress-stretch curves of the tissue models under uniaxial and "
+        "equibiaxial loading (no finite elements).",
+        true);
+    if (exit_code >= 0)
+      return exit_code;
+    const std::string &prm_file = arguments.parameter_file;
+    const bool         print    = arguments.print_parameters;
+    const bool         dry_run  = arguments.dry_run;
+    ParameterHandler   prm;
+    Parameters         parameters;
     Parameters::declare(prm);
     // --print-parameters: every parameter with its documentation, as
     // generated from the code (one material subsection shown).
-    if (prm_file == "--print-parameters")
+    if (print)
     {
+      ParameterReader::declare_program_entry(prm);
       prm.enter_subsection("Materials");
       prm.enter_subsection("Material 0");
       MaterialLibrary::declare_material_parameters(prm);
@@ -224,6 +239,11 @@ main(int argc, char **argv)
     }
     MaterialLibrary::parse_input(prm, prm_file);
     parameters.parse(prm);
+    if (dry_run)
+    {
+      ProgramArguments::report_dry_run("tissue_curves", prm_file, true);
+      return 0;
+    }
 
     MaterialLibrary library;
     library.parse_parameters(prm);

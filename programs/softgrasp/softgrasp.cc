@@ -12,7 +12,14 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   softgrasp::SolverProgram program;
-  program.report_2d = [](const softgrasp::Simulation<2> &solver)
+  program.name = "softgrasp";
+  // any problem a .prm describes: the solver examples' files too
+  program.reads_files_of = {"block_compression",
+                            "cook_membrane",
+                            "frictional_drag",
+                            "hertz_indentation",
+                            "ironing"};
+  program.report_2d      = [](const softgrasp::Simulation<2> &solver)
   { softgrasp::report_contact_forces(solver, "contact_forces", std::cout); };
   program.report_3d = [](const softgrasp::Simulation<3> &solver)
   { softgrasp::report_contact_forces(solver, "contact_forces", std::cout); };

@@ -25,6 +25,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   softgrasp::GraspStudyProgram             program;
   program.default_parameter_file = "arm_grasp.prm";
+  program.name                   = "arm_grasp";
   program.declare_study_parameters =
       &softgrasp::ArmGraspStudy::declare_parameters;
   program.make_study = [](MPI_Comm comm, dealii::ParameterHandler &prm)

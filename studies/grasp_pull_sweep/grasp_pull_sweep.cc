@@ -14,6 +14,7 @@
 #include <iostream>
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/base/program_arguments.h>
 #include <softgrasp/mujoco/grasp_pull_sweep.h>
 #include <softgrasp/solvers/solver_program.h>
@@ -67,7 +68,8 @@ main(int argc, char **argv)
   using namespace softgrasp;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                           comm = MPI_COMM_WORLD;
-  const bool root      = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  ParameterReader::set_program("grasp_pull_sweep", {});
   const auto arguments = ProgramArguments::parse(
       argc,
       argv,
@@ -104,6 +106,12 @@ main(int argc, char **argv)
     {
       if (root)
         prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+      return 0;
+    }
+    if (arguments.dry_run)
+    {
+      ProgramArguments::report_dry_run(
+          "grasp_pull_sweep", arguments.parameter_file, root);
       return 0;
     }
     PullSweepStudy study(comm, prm);

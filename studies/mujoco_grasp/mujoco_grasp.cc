@@ -20,6 +20,10 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   softgrasp::GraspStudyProgram             program;
   program.default_parameter_file = "sphere_squeeze.prm";
-  program.rigid_only             = true;
+  program.name                   = "mujoco_grasp";
+  // it runs the rigid stage of sphere_squeeze's files (the arm studies
+  // build their scene from 'Arm scene', which only they read)
+  program.reads_files_of = {"sphere_squeeze"};
+  program.rigid_only     = true;
   return program.run(argc, argv);
 }

@@ -36,5 +36,6 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   softgrasp::GraspStudyProgram             program;
   program.default_parameter_file = "sphere_squeeze.prm";
+  program.name                   = "sphere_squeeze";
   return program.run(argc, argv);
 }

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
@@ -20,6 +21,69 @@ namespace softgrasp
     {
       static std::map<std::string, std::string> sections;
       return sections;
+    }
+
+    /// The program this process runs, and the programs whose files it reads.
+    struct ProgramIdentity
+    {
+      std::string              name;
+      std::vector<std::string> reads;
+    };
+
+    ProgramIdentity &identity()
+    {
+      static ProgramIdentity program;
+      return program;
+    }
+
+    /// The value of the top-level entry 'Program' of @p text, or "".
+    std::string program_entry(const std::string &text)
+    {
+      std::istringstream in(text);
+      std::string        line;
+      int                depth = 0;
+      while (std::getline(in, line))
+      {
+        std::istringstream words(line);
+        std::string        keyword;
+        words >> keyword;
+        if (keyword == "subsection")
+          ++depth;
+        else if (keyword == "end")
+          --depth;
+        else if (keyword == "set" && depth == 0)
+        {
+          const auto equals = line.find('=');
+          const auto name   = line.substr(0, equals);
+          if (equals != std::string::npos &&
+              Utilities::trim(name.substr(name.find("set") + 3)) == "Program")
+            return Utilities::trim(line.substr(equals + 1));
+        }
+      }
+      return "";
+    }
+
+    /// Refuse @p text (from @p source) if its 'Program' is not one this
+    /// program reads.
+    void check_program(const std::string &text, const std::string &source)
+    {
+      const ProgramIdentity &self    = identity();
+      const std::string      written = program_entry(text);
+      if (self.name.empty() || written.empty() || written == self.name ||
+          std::find(self.reads.begin(), self.reads.end(), written) !=
+              self.reads.end())
+        return;
+      std::string reads = self.reads.empty()
+                              ? " (it reads its own files only)"
+                              : ", which reads its own files and those of ";
+      for (std::size_t i = 0; i < self.reads.size(); ++i)
+        reads += (i == 0 ? "" : ", ") + self.reads[i];
+      throw InputError("The parameter file '" + source + "' is written for " +
+                       written + " (its entry 'Program = " + written +
+                       "'), and this program is " + self.name + reads +
+                       ". Fix: run " + written + " " + source + ", or give " +
+                       self.name + " one of its own files (" + self.name +
+                       " --print-parameters lists its entries).");
     }
 
     /// The end of the message for a file deal.II cannot read: the fix, and
@@ -199,6 +263,8 @@ namespace softgrasp
                                     const std::string &source) const
   {
     check_structure(text, source);
+    check_program(text, source);
+    declare_program_entry(prm);
     try
     {
       for (const Pass &pass : passes)
@@ -227,6 +293,28 @@ namespace softgrasp
                        printable(Utilities::trim(message)) +
                        unreadable_file_advice(message));
     }
+  }
+
+  void ParameterReader::set_program(const std::string              &name,
+                                    const std::vector<std::string> &reads)
+  {
+    identity() = {name, reads};
+  }
+
+  void ParameterReader::declare_program_entry(ParameterHandler &prm)
+  {
+    // declared anew if declared already (deal.II replaces the entry; its
+    // value is set by the parse that follows)
+    const std::string name = identity().name;
+    prm.declare_entry(
+        "Program",
+        name,
+        Patterns::Anything(),
+        "The softgrasp program this file is written for" +
+            (name.empty() ? std::string() : " (here: " + name + ")") +
+            ". A program refuses a file written for another program and "
+            "names that program; a file without this entry is read by any "
+            "program that knows its entries. Unit: none.");
   }
 
   bool ParameterReader::register_program_section(const std::string &section,

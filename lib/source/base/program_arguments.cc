@@ -13,7 +13,7 @@ namespace softgrasp
     arguments.default_file   = default_file;
     arguments.parameter_file = default_file;
     arguments.accepted       = accepted;
-    std::string valid        = "--print-parameters, --help";
+    std::string valid        = "--print-parameters, --dry-run, --help";
     for (const auto &option : accepted)
       valid += ", " + option.name +
                (option.value.empty() ? "" : " <" + option.value + ">");
@@ -30,6 +30,8 @@ namespace softgrasp
                           "program once per value).";
       else if (arg == "--print-parameters")
         arguments.print_parameters = true;
+      else if (arg == "--dry-run")
+        arguments.dry_run = true;
       else if (arg == "--help" || arg == "-h")
         arguments.help = true;
       else if (own != nullptr && !own->value.empty())
@@ -66,12 +68,15 @@ namespace softgrasp
       return -1;
     if (root)
     {
-      std::cout << "Usage: " << program << " [--print-parameters]";
+      std::cout << "Usage: " << program << " [--print-parameters] [--dry-run]";
       for (const auto &option : accepted)
         std::cout << " [" << option.name
                   << (option.value.empty() ? "" : " <" + option.value + ">")
                   << "]";
-      std::cout << " [file.prm]\n" << description << "\n";
+      std::cout << " [file.prm]\n"
+                << description << "\n"
+                << "  --dry-run: read and check the file, then stop (nothing "
+                   "is run or written)\n";
       for (const auto &option : accepted)
         std::cout << "  " << option.name
                   << (option.value.empty() ? "" : " <" + option.value + ">")
@@ -79,5 +84,17 @@ namespace softgrasp
       std::cout << "Default parameter file: " << default_file << std::endl;
     }
     return 0;
+  }
+  void ProgramArguments::report_dry_run(const std::string &program,
+                                        const std::string &file,
+                                        const bool         root)
+  {
+    if (root)
+      std::cout << "Dry run: '" << file << "' was read as a " << program
+                << " file and every parameter checked; nothing was run or "
+                   "written. What only the run can check (a mesh, the "
+                   "contact set-up, the output directory) is checked when "
+                   "it starts."
+                << std::endl;
   }
 } // namespace softgrasp

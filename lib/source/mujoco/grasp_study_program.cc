@@ -4,6 +4,7 @@
 #include <iostream>
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/base/program_arguments.h>
 #include <softgrasp/grasp/indentation_study.h>
 #include <softgrasp/mujoco/grasp_simulation.h>
@@ -84,7 +85,8 @@ namespace softgrasp
   {
     const MPI_Comm comm = MPI_COMM_WORLD;
     const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
-    const auto     arguments =
+    ParameterReader::set_program(name, reads_files_of);
+    const auto arguments =
         ProgramArguments::parse(argc, argv, default_parameter_file);
     const int exit_code = arguments.handle(
         argv[0],
@@ -104,6 +106,11 @@ namespace softgrasp
       {
         if (root)
           prm.print_parameters(std::cout, ParameterHandler::PRM);
+        return 0;
+      }
+      if (arguments.dry_run)
+      {
+        ProgramArguments::report_dry_run(name, filename, root);
         return 0;
       }
       const std::unique_ptr<IndentationStudy> study_pointer =

@@ -3,6 +3,8 @@
 #include <iostream>
 #include <softgrasp/base/fatal_error.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_reader.h>
+#include <softgrasp/base/program_arguments.h>
 #include <softgrasp/solvers/simulation.h>
 #include <softgrasp/solvers/solver_program.h>
 #include <sstream>
@@ -79,6 +81,7 @@ namespace softgrasp
       }
       else
       {
+        ParameterReader::declare_program_entry(prm);
         declare_dimension(prm);
         Simulation<2>::declare_parameters(prm);
       }
@@ -105,28 +108,43 @@ namespace softgrasp
   {
     const MPI_Comm comm = MPI_COMM_WORLD;
     const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
-    bool           print_parameters = false;
-    bool           file_given       = false;
-    std::string    filename         = default_parameter_file;
+    ParameterReader::set_program(name, reads_files_of);
+    bool        print_parameters = false;
+    bool        dry_run          = false;
+    bool        file_given       = false;
+    std::string filename         = default_parameter_file;
     for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
       if (arg == "--print-parameters")
         print_parameters = true;
+      else if (arg == "--dry-run")
+        dry_run = true;
       else if (arg == "--help" || arg == "-h")
       {
         if (root)
           std::cout << "Usage: " << argv[0]
-                    << " [--print-parameters] [file.prm]\n"
+                    << " [--print-parameters] [--dry-run] [file.prm]\n"
                        "--print-parameters prints every parameter with its "
                        "documentation (with a file: including the file's "
                        "subsections and values).\n"
+                       "--dry-run reads and checks the file, then stops "
+                       "(nothing is run or written).\n"
                     << (default_parameter_file.empty()
                             ? "A parameter file must be given."
                             : "Default parameter file: " +
                                   default_parameter_file)
                     << std::endl;
         return 0;
+      }
+      else if (!arg.empty() && arg[0] == '-')
+      {
+        if (root)
+          std::cerr << "Error: unknown option '" << arg
+                    << "'. Fix: use --print-parameters, --dry-run, --help or "
+                       "the name of a .prm file."
+                    << std::endl;
+        return 1;
       }
       else
       {
@@ -147,6 +165,16 @@ namespace softgrasp
     {
       if (print_parameters)
         print_all_parameters(filename, file_given, root);
+      else if (dry_run)
+      {
+        ParameterHandler prm;
+        if (read_dimension(filename) == 2)
+          read_parameters<2>(prm, filename);
+        else
+          read_parameters<3>(prm, filename);
+        ProgramArguments::report_dry_run(
+            name.empty() ? "softgrasp" : name, filename, root);
+      }
       else if (read_dimension(filename) == 2)
         run_file<2>(comm, filename, report_2d);
       else

@@ -51,6 +51,26 @@ namespace softgrasp
     static bool register_program_section(const std::string &section,
                                          const std::string &programs);
 
+    /**
+     * The program this process runs (@p name, e.g. "arm_grasp") and the
+     * other programs whose files it reads as well (the softgrasp program
+     * runs every solver example's file; mujoco_grasp sphere_squeeze's).
+     * A file whose top-level entry 'Program' names a program outside these
+     * is refused before anything else is read, with an InputError that
+     * names the program the file is written for. Files without the entry
+     * are read as before. Called once by each program's main().
+     */
+    static void set_program(const std::string              &name,
+                            const std::vector<std::string> &reads_files_of);
+
+    /**
+     * Declare the top-level entry 'Program' in @p prm (its default: the
+     * name given to set_program()); declaring it again resets it to that
+     * default. Every file read by read_string() may carry it, and
+     * --print-parameters shows it.
+     */
+    static void declare_program_entry(dealii::ParameterHandler &prm);
+
     /// Parse @p text (from @p source, used in messages) into @p prm.
     void read_string(dealii::ParameterHandler &prm,
                      const std::string        &text,

@@ -18,15 +18,18 @@ namespace softgrasp
 
   /**
    * The command line of a study program:
-   *   program [--print-parameters] [--help | -h] [options] [file.prm]
+   *   program [--print-parameters] [--dry-run] [--help | -h] [options]
+   *           [file.prm]
    * parsed once. An unknown option ("-x") or an option without its value
    * leaves an error message with the fix; the last file name wins; none
    * gives the default file.
    */
   struct ProgramArguments
   {
-    bool        print_parameters = false;
-    bool        help             = false;
+    bool print_parameters = false;
+    bool help             = false;
+    /// --dry-run: read and check the file, then stop (report_dry_run()).
+    bool        dry_run = false;
     std::string parameter_file;
     std::string error; ///< "" if the command line is valid
     /// The program's own options that were given, with their values ("" for
@@ -54,6 +57,15 @@ namespace softgrasp
     int handle(const std::string &program,
                const std::string &description,
                const bool         root) const;
+
+    /**
+     * What a program prints on rank 0 (@p root) after a dry run of
+     * @p program on @p file: the file was read and checked, nothing was
+     * run or written.
+     */
+    static void report_dry_run(const std::string &program,
+                               const std::string &file,
+                               bool               root);
 
   private:
     std::string                default_file;

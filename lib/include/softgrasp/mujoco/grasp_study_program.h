@@ -6,6 +6,7 @@
 #include <memory>
 #include <mpi.h>
 #include <string>
+#include <vector>
 
 namespace softgrasp
 {
@@ -14,7 +15,7 @@ namespace softgrasp
   /**
    * The main() of a grasp study (studies/sphere_squeeze, ...):
    *
-   *   program [--print-parameters] [file.prm]
+   *   program [--print-parameters] [--dry-run] [file.prm]
    *
    * reads the .prm ("Rigid environment", "Indentation study" and everything
    * a Simulation<3> reads), then
@@ -31,6 +32,10 @@ namespace softgrasp
   struct GraspStudyProgram
   {
     std::string default_parameter_file;
+    /// The program's name (ParameterReader::set_program()) and the other
+    /// programs whose files it reads (mujoco_grasp: sphere_squeeze's).
+    std::string              name;
+    std::vector<std::string> reads_files_of;
     /// Run the rigid stage only (write the kinematics file and stop).
     bool                                          rigid_only = false;
     std::function<void(const IndentationStudy &)> report;

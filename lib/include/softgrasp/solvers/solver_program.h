@@ -4,13 +4,14 @@
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace softgrasp
 {
   /**
    * The main() of a solver program, shared by the examples:
    *
-   *   program [--print-parameters] [file.prm]
+   *   program [--print-parameters] [--dry-run] [file.prm]
    *
    * reads "Dimension" (2: plane strain, 3) and then the whole file with
    * every declaration pass, runs the Simulation<dim> that
@@ -26,7 +27,11 @@ namespace softgrasp
 
   struct SolverProgram
   {
-    std::string                                default_parameter_file;
+    std::string default_parameter_file;
+    /// The program's name (ParameterReader::set_program()) and the other
+    /// programs whose files it runs.
+    std::string                                name;
+    std::vector<std::string>                   reads_files_of;
     std::function<void(const Simulation<2> &)> report_2d;
     std::function<void(const Simulation<3> &)> report_3d;
 
