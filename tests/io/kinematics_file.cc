@@ -88,6 +88,40 @@ main()
                   << std::endl;
   SG_CHECK(same, "write/read round trip");
 
+  // A mesh geom (schema 3): its surface round-trips exactly and becomes a
+  // triangle-mesh shape; a file of schema 2 (no meshes) is still read.
+  {
+    KinematicsData       with_mesh = written;
+    KinematicsData::Geom pad;
+    pad.name      = "pad";
+    pad.type      = "mesh";
+    pad.size      = Eigen::Vector3d(0.01, 0.01, 0.01);
+    pad.vertices  = {{0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0}, {0, 0, 0.01}};
+    pad.triangles = {{{0, 2, 1}}, {{0, 1, 3}}, {{0, 3, 2}}, {{1, 2, 3}}};
+    with_mesh.bodies[0].geoms.push_back(pad);
+    write_kinematics_file(with_mesh, "mesh.h5");
+    const auto  back = read_kinematics_file("mesh.h5");
+    const auto &geom = back.bodies[0].geoms.back();
+    SG_CHECK(geom.vertices == pad.vertices && geom.triangles == pad.triangles,
+             "a mesh geom's surface round-trips exactly");
+    SG_CHECK(rigid_bodies_from(back).bodies()[0].geoms().back().shape->type() ==
+                 "mesh",
+             "a mesh geom becomes a triangle-mesh shape");
+    write_kinematics_file(written, "schema2.h5");
+    const hid_t file = H5Fopen("schema2.h5", H5F_ACC_RDWR, H5P_DEFAULT);
+    const hid_t a    = H5Aopen(file, "schema_version", H5P_DEFAULT);
+    const int   v    = 2;
+    H5Awrite(a, H5T_NATIVE_INT, &v);
+    H5Aclose(a);
+    H5Fclose(file);
+    SG_CHECK(read_kinematics_file("schema2.h5").bodies.size() ==
+                 written.bodies.size(),
+             "a schema 2 file is still read");
+    dealii::deallog << "mesh geom round trip exact, a mesh shape built; a "
+                       "schema 2 file read: 1"
+                    << std::endl;
+  }
+
   const RigidBodySet set = rigid_bodies_from(read);
   SG_CHECK(set.bodies().size() == 2, "bodies without geoms are left out");
   double worst = 0;
@@ -170,6 +204,19 @@ main()
                 std::vector<double> p(9, 0.0);
                 p[4] = 1e300;
                 tamper(f, "/bodies/finger_distal/position", p);
+              }),
+      variant("triangle.h5",
+              [](const std::string &f)
+              {
+                // a triangle of a mesh geom naming a vertex it does not have
+                KinematicsData       data = example_kinematics();
+                KinematicsData::Geom pad;
+                pad.name      = "pad";
+                pad.type      = "mesh";
+                pad.vertices  = {{0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0}};
+                pad.triangles = {{{0, 1, 5}}};
+                data.bodies[0].geoms.push_back(pad);
+                write_kinematics_file(data, f);
               }),
       variant("time.h5",
               [](const std::string &f) {

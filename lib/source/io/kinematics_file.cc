@@ -86,6 +86,19 @@ namespace softgrasp
       return {v[0], v[1], v[2]};
     }
 
+    /// A mesh geom's vertices (n x 3, m) and triangles (m x 3 indices).
+    void write_surface(Group &geom, const KinematicsData::Geom &g)
+    {
+      std::vector<double> vertices, triangles;
+      for (const auto &v : g.vertices)
+        vertices.insert(vertices.end(), {v[0], v[1], v[2]});
+      for (const auto &t : g.triangles)
+        triangles.insert(triangles.end(),
+                         {double(t[0]), double(t[1]), double(t[2])});
+      geom.dataset("vertices", vertices, g.vertices.size(), 3);
+      geom.dataset("triangles", triangles, g.triangles.size(), 3);
+    }
+
     void write_bodies(Group &root, const std::vector<KinematicsData::Body> &all)
     {
       Group bodies = root.group("bodies");
@@ -102,6 +115,8 @@ namespace softgrasp
           geom.attribute("type", g.type);
           geom.vector("size", values_of(g.size));
           write_poses(geom, {g.local_pose});
+          if (!g.triangles.empty())
+            write_surface(geom, g);
         }
       }
     }
@@ -270,6 +285,34 @@ namespace softgrasp
         return {link.substr(0, slash), link.substr(slash + 1)};
       }
 
+      /// A mesh geom's vertices and triangles; indices checked.
+      void read_surface(const std::string &path, KinematicsData::Geom &g) const
+      {
+        const auto v = file.table(path + "/vertices", 0, 3);
+        const auto t = file.table(path + "/triangles", 0, 3);
+        for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+          g.vertices.emplace_back(v[i], v[i + 1], v[i + 2]);
+        for (std::size_t i = 0; i + 2 < t.size(); i += 3)
+        {
+          std::array<unsigned, 3> triangle;
+          for (unsigned int k = 0; k < 3; ++k)
+          {
+            if (!(t[i + k] >= 0 && t[i + k] < g.vertices.size() &&
+                  t[i + k] == std::floor(t[i + k])))
+            {
+              std::ostringstream index;
+              index << t[i + k];
+              fail("has a triangle with the vertex index " + index.str() +
+                       " in '" + path + "/triangles', not one of its " +
+                       std::to_string(g.vertices.size()) + " vertices",
+                   "write the mesh again with the rigid-body program");
+            }
+            triangle[k] = static_cast<unsigned>(t[i + k]);
+          }
+          g.triangles.push_back(triangle);
+        }
+      }
+
       void read_header(KinematicsData &data) const;
       void read_bodies(KinematicsData &data) const;
       void read_joints(KinematicsData &data) const;
@@ -287,10 +330,12 @@ namespace softgrasp
              "give the file written by the rigid-body program");
       const int version =
           static_cast<int>(file.number_attribute("/", "schema_version"));
-      if (version != KinematicsData::schema_version)
+      if (version < KinematicsData::oldest_schema_version ||
+          version > KinematicsData::schema_version)
         fail("has schema version " + std::to_string(version) +
-                 ", this softgrasp reads version " +
-                 std::to_string(KinematicsData::schema_version),
+                 ", this softgrasp reads versions " +
+                 std::to_string(KinematicsData::oldest_schema_version) +
+                 " to " + std::to_string(KinematicsData::schema_version),
              "write the file again with the matching softgrasp");
       data.source = file.string_attribute("/", "source");
       data.time   = file.table("/time", 0, 1);
@@ -320,6 +365,8 @@ namespace softgrasp
           g.type       = file.string_attribute(geom_path, "type");
           g.size       = vector(geom_path + "/size");
           g.local_pose = poses(geom_path, 1)[0];
+          if (g.type == "mesh")
+            read_surface(geom_path, g);
           body.geoms.push_back(g);
         }
         data.bodies.push_back(body);
@@ -550,9 +597,15 @@ namespace softgrasp
                                     b.poses,
                                     "kinematics body '" + b.name + "'"));
       for (const auto &g : b.geoms)
-        body.add_geom(g.name,
-                      create_shape(g.type, g.size, b.name + "/" + g.name),
-                      g.local_pose);
+      {
+        ShapeSpec spec;
+        spec.type      = g.type;
+        spec.size      = g.size;
+        spec.geom_name = b.name + "/" + g.name;
+        spec.vertices  = g.vertices;
+        spec.triangles = g.triangles;
+        body.add_geom(g.name, create_shape(spec), g.local_pose);
+      }
       const unsigned int index = set.add_body(body);
       for (const auto &f : data.equilibrium_forces)
         if (f.body == b.name)

@@ -8,6 +8,32 @@ namespace softgrasp
 {
   namespace
   {
+    /**
+     * The surface of the mesh geom @p g as MuJoCo holds it after compiling
+     * the model (re-centred in the geom's frame, which geom_pos and
+     * geom_quat place): the finite element link is exactly MuJoCo's.
+     */
+    void
+    add_mesh_surface(const mjModel *m, const int g, KinematicsData::Geom &geom)
+    {
+      const int mesh = m->geom_dataid[g];
+      for (int v = 0; v < m->mesh_vertnum[mesh]; ++v)
+      {
+        const float *p = m->mesh_vert + 3 * (m->mesh_vertadr[mesh] + v);
+        geom.vertices.emplace_back(p[0], p[1], p[2]);
+      }
+      for (int f = 0; f < m->mesh_facenum[mesh]; ++f)
+      {
+        const int *t = m->mesh_face + 3 * (m->mesh_faceadr[mesh] + f);
+        geom.triangles.push_back(
+            std::array<unsigned, 3>{{static_cast<unsigned>(t[0]),
+                                     static_cast<unsigned>(t[1]),
+                                     static_cast<unsigned>(t[2])}});
+      }
+    }
+  } // namespace
+  namespace
+  {
     double max_abs(const mjtNum *values, const int n)
     {
       double result = 0;
@@ -82,11 +108,11 @@ namespace softgrasp
                     hand_bodies.end(),
                     m->geom_bodyid[g]) != hand_bodies.end())
       {
-        if (m->geom_type[g] == mjGEOM_MESH || m->geom_type[g] == mjGEOM_HFIELD)
+        if (m->geom_type[g] == mjGEOM_HFIELD)
           throw InputError(
               "Hand geom '" + std::string(mj_id2name(m, mjOBJ_GEOM, g)) +
-              "' is a mesh or height field, which the kinematics file cannot "
-              "carry. Fix: model the hand with primitive geoms (capsules).");
+              "' is a height field, which the kinematics file cannot "
+              "carry. Fix: model the link with a mesh or primitive geoms.");
         link_geoms.push_back(g);
       }
     fk_data = mujoco.make_data();
@@ -159,6 +185,8 @@ namespace softgrasp
                                  m->geom_quat[4 * g + 1],
                                  m->geom_quat[4 * g + 2],
                                  m->geom_quat[4 * g + 3]);
+          if (m->geom_type[g] == mjGEOM_MESH)
+            add_mesh_surface(m, g, geom);
           body.geoms.push_back(geom);
         }
       data.bodies.push_back(body);

@@ -471,6 +471,9 @@ namespace softgrasp
   std::unique_ptr<TriangleMeshShape>
   TriangleMeshShape::create(const ShapeSpec &spec)
   {
+    if (!spec.triangles.empty())
+      return std::make_unique<TriangleMeshShape>(
+          spec.vertices, spec.triangles, "mesh geom '" + spec.geom_name + "'");
     if (spec.mesh_file.empty())
       throw InputError("Geom '" + spec.geom_name +
                        "' has type mesh but names no mesh file. Fix: set "

@@ -1,6 +1,7 @@
 #ifndef softgrasp_io_kinematics_file_h
 #define softgrasp_io_kinematics_file_h
 
+#include <array>
 #include <limits>
 #include <softgrasp/rigid/rigid_body_set.h>
 #include <string>
@@ -12,12 +13,15 @@ namespace softgrasp
    * The kinematics a rigid-body simulator (MuJoCo) hands to the finite
    * element solver: every body's world pose over time, the geoms of each
    * body, the joint angles and targets, and the contact forces at the
-   * equilibrium grasp. The HDF5 layout (schema version 2) is documented in
-   * doc/kinematics_file.md. SI units: s, m, rad, N.
+   * equilibrium grasp. The HDF5 layout (schema version 3: with the
+   * surfaces of mesh geoms; version 2 files are still read) is documented
+   * in doc/kinematics_file.md. SI units: s, m, rad, N.
    */
   struct KinematicsData
   {
-    static constexpr int schema_version = 2;
+    static constexpr int schema_version = 3;
+    /// The oldest schema version the reader still reads.
+    static constexpr int oldest_schema_version = 2;
 
     struct Geom
     {
@@ -25,6 +29,11 @@ namespace softgrasp
       std::string     type;                           ///< MuJoCo geom type
       Eigen::Vector3d size = Eigen::Vector3d::Zero(); ///< MuJoCo size (m)
       Pose            local_pose;                     ///< in the body frame
+      /// A mesh geom's closed surface in the geom's frame (m), as MuJoCo
+      /// holds it (re-centred); empty for the other types.
+      std::vector<Eigen::Vector3d> vertices;
+      /// Its triangles (vertex indices, counter-clockwise from outside).
+      std::vector<std::array<unsigned, 3>> triangles;
     };
     struct Body
     {

@@ -2,6 +2,7 @@
 #define softgrasp_rigid_shape_h
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <softgrasp/base/plugin_registry.h>
@@ -54,6 +55,10 @@ namespace softgrasp
     std::string     geom_name;                      ///< for messages
     std::string     mesh_file;                      ///< STL or OBJ
     double          mesh_scale = 1;                 ///< m per file unit
+    /// A mesh given by its surface instead of a file (from a kinematics
+    /// file): vertices (m) and triangles, counter-clockwise from outside.
+    std::vector<Eigen::Vector3d>         vertices;
+    std::vector<std::array<unsigned, 3>> triangles;
 
     /// Throw an InputError naming the geom unless size[0..n) are positive
     /// and finite; @p meaning says what they are.
