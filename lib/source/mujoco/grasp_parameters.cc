@@ -41,8 +41,9 @@ namespace softgrasp
           "thumb_proximal_joint, thumb_distal_joint, finger1_proximal_joint, "
           "finger1_distal_joint, finger2_proximal_joint, finger2_distal_joint",
           Patterns::List(Patterns::Anything(), 1),
-          "Hinge joints that close the hand, each driven by a position "
-          "actuator; a positive angle closes.");
+          "Joints that close the hand, each driven by a position actuator "
+          "whose positive target closes: hinges (a finger), or slide "
+          "joints (a parallel jaw), all of one type.");
       prm.declare_entry(
           "Contact links",
           "thumb_proximal_link, thumb_distal_link, finger1_proximal_link, "
@@ -53,12 +54,14 @@ namespace softgrasp
                         "0.5",
                         Patterns::Double(0),
                         "Rate at which the actuator targets close until "
-                        "each joint's link touches. Unit: rad/s.");
+                        "each joint's link touches. Unit: rad/s (m/s for "
+                        "slide finger joints).");
       prm.declare_entry("Grip",
                         "0.1",
                         Patterns::Double(0),
                         "Grip tightness: actuator target beyond the angle "
-                        "of first touch. Unit: rad.");
+                        "of first touch. Unit: rad (m for slide finger "
+                        "joints).");
       prm.declare_entry("Velocity tolerance",
                         "1e-3",
                         Patterns::Double(0),
@@ -92,7 +95,8 @@ namespace softgrasp
                           "0.2",
                           Patterns::Double(0),
                           "Closure beyond the equilibrium state added to "
-                          "every finger joint. Unit: rad.");
+                          "every finger joint. Unit: rad (m for slide "
+                          "finger joints).");
         prm.declare_entry("Joint weights",
                           "",
                           Patterns::List(Patterns::Double(0)),

@@ -60,12 +60,25 @@ namespace softgrasp
     {
       const int j = mujoco.id(mjOBJ_JOINT, name, "joint");
       const int a = mujoco.actuator_of_joint(j);
-      if (m->jnt_type[j] != mjJNT_HINGE || a < 0)
+      if ((m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) ||
+          a < 0)
         throw InputError("Finger joint '" + name + "' of the scene '" +
                          mujoco.file +
-                         "' is not a hinge driven by an actuator. Fix: list "
-                         "hinges with <position> actuators in 'Rigid "
-                         "environment/Finger joints'.");
+                         "' is not a hinge or slide joint driven by an "
+                         "actuator. Fix: list hinge or slide joints with "
+                         "<position> actuators in 'Rigid environment/Finger "
+                         "joints'.");
+      const std::string unit = m->jnt_type[j] == mjJNT_HINGE ? "rad" : "m";
+      if (!finger_joints.empty() && unit != joint_unit)
+        throw InputError(
+            "Finger joints '" +
+            std::string(mj_id2name(m, mjOBJ_JOINT, finger_joints.front())) +
+            "' and '" + name + "' of the scene '" + mujoco.file +
+            "' are a hinge and a slide joint: 'Closing speed', 'Grip' and "
+            "'Extra joint angle' are in one unit for all of them (rad, or m "
+            "for slide joints). Fix: list joints of one type in 'Rigid "
+            "environment/Finger joints'.");
+      joint_unit = unit;
       finger_joints.push_back(j);
       finger_actuators.push_back(a);
     }
@@ -368,8 +381,8 @@ namespace softgrasp
       targets[k] = d->qpos[m->jnt_qposadr[j]] + parameters.grip;
       log << "  t = " << std::setw(6) << d->time
           << " s: " << mj_id2name(m, mjOBJ_JOINT, j) << " touches at "
-          << d->qpos[m->jnt_qposadr[j]] << " rad, target " << targets[k]
-          << " rad\n";
+          << d->qpos[m->jnt_qposadr[j]] << " " << joint_unit << ", target "
+          << targets[k] << " " << joint_unit << "\n";
     }
     else
     {
@@ -456,8 +469,9 @@ namespace softgrasp
       targets[k] = d->qpos[m->jnt_qposadr[finger_joints[k]]];
       set_target(finger_joints[k], targets[k]);
     }
-    log << "MuJoCo: closing the hand at " << parameters.closing_speed
-        << " rad/s, grip " << parameters.grip << " rad beyond first touch\n";
+    log << "MuJoCo: closing the hand at " << parameters.closing_speed << " "
+        << joint_unit << "/s, grip " << parameters.grip << " " << joint_unit
+        << " beyond first touch\n";
     double next_sample = 0;
     record(0, d);
     while (std::find(touched.begin(), touched.end(), false) != touched.end())
@@ -502,7 +516,8 @@ namespace softgrasp
     const double   start = data.equilibrium_time;
     const double   slide0 =
         slide_joint >= 0 ? equilibrium_qpos[m->jnt_qposadr[slide_joint]] : 0;
-    log << "MuJoCo: indentation, " << ind.extra_angle << " rad more on "
+    log << "MuJoCo: indentation, " << ind.extra_angle << " " << joint_unit
+        << " more on "
         << (ind.joint_weights.empty() ? "every finger joint"
                                       : "the finger joints (times their "
                                         "weights)")
@@ -521,7 +536,7 @@ namespace softgrasp
       const bool settled = settle(ind.settle_time, false);
       forward_kinematics(angles, slide0);
       record(start + ind.duration * s / ind.samples, fk_data);
-      log << "  closure " << std::setw(6) << closure << " rad"
+      log << "  closure " << std::setw(6) << closure << " " << joint_unit
           << (settled ? "" : " (MuJoCo not settled within 'Settle time')")
           << '\n';
     }

@@ -25,19 +25,19 @@ namespace softgrasp
     std::string              base_body;        ///< the hand's base body
     Eigen::Vector3d          base_position;    ///< m, world
     Eigen::Quaterniond       base_orientation; ///< w, x, y, z
-    std::vector<std::string> finger_joints;    ///< hinges with actuators
+    std::vector<std::string> finger_joints; ///< hinge or slide, with actuators
     std::vector<std::string> contact_links; ///< geoms touching at equilibrium
-    double closing_speed      = 0.5;        ///< rad/s of the actuator targets
-    double grip               = 0.1;        ///< rad beyond first touch
-    double velocity_tolerance = 1e-3;       ///< m/s and rad/s
-    double force_tolerance    = 1e-3;       ///< relative change per window
-    double settle_window      = 0.05;       ///< s
-    double maximum_time       = 10;         ///< s of simulated closing
-    double sample_interval    = 0.01;       ///< s between recorded samples
+    double                   closing_speed = 0.5; ///< rad/s (m/s: slide joints)
+    double                   grip = 0.1; ///< rad (m) beyond first touch
+    double                   velocity_tolerance = 1e-3; ///< m/s and rad/s
+    double force_tolerance = 1e-3; ///< relative change per window
+    double settle_window   = 0.05; ///< s
+    double maximum_time    = 10;   ///< s of simulated closing
+    double sample_interval = 0.01; ///< s between recorded samples
 
     struct Indentation
     {
-      double extra_angle = 0.2; ///< rad added to every finger joint
+      double extra_angle = 0.2; ///< rad (m) added to every finger joint
       /// Per finger joint, the fraction of extra_angle it closes (1 each
       /// if empty); also how the grip levels raise the actuator targets.
       std::vector<double> joint_weights;

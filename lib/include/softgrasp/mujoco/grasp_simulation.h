@@ -116,6 +116,8 @@ namespace softgrasp
     mjData               *equilibrium_data = nullptr; ///< state at equilibrium
     int                   object_body, base_body, slide_joint = -1;
     std::vector<int>      finger_joints, finger_actuators, link_geoms;
+    /// The finger joints' unit: "rad" (hinges) or "m" (slide joints).
+    std::string joint_unit = "rad";
     /// The joints in the file (fingers, then the slide joint) and their
     /// actuators.
     std::vector<int>    recorded_joints, recorded_actuators;
