@@ -106,7 +106,8 @@ namespace softgrasp
   void IndentationStudy::print_links() const
   {
     std::cout << "\nIndentation: closure " << result.closure << " of "
-              << extra_angle << " rad in " << result.steps << " steps"
+              << extra_angle << " " << closure_unit << " in " << result.steps
+              << " steps"
               << (result.target_met ? " (target normal force reached)" : "")
               << ".\nForces on the links (N), finite elements | MuJoCo at "
                  "the same closure:\n";

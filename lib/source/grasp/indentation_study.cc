@@ -175,7 +175,10 @@ namespace softgrasp
     extra_angle    = 0;
     for (const auto &p : kinematics.phases)
       if (p.name == "indentation")
-        extra_angle = p.amount;
+      {
+        extra_angle  = p.amount;
+        closure_unit = p.unit;
+      }
 
     // The study's typed settings of the solver.
     SolverInputs<3> inputs      = inputs_for(cut);

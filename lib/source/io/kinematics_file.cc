@@ -168,6 +168,7 @@ namespace softgrasp
                                          {"end_time", p.end_time},
                                          {"amount", p.amount}})
           group.attribute(key, value);
+        group.attribute("unit", p.unit);
       }
     }
 
@@ -425,6 +426,8 @@ namespace softgrasp
         p.start_time = file.number_attribute(path, "start_time");
         p.end_time   = file.number_attribute(path, "end_time");
         p.amount     = file.number_attribute(path, "amount");
+        if (file.has_attribute(path, "unit"))
+          p.unit = file.string_attribute(path, "unit");
         if (!(p.end_time > p.start_time) || !std::isfinite(p.amount))
           fail("has the phase '" + path + "' with start_time " +
                    std::to_string(p.start_time) + " s, end_time " +

@@ -540,8 +540,11 @@ namespace softgrasp
           << (settled ? "" : " (MuJoCo not settled within 'Settle time')")
           << '\n';
     }
-    data.phases.push_back(
-        {"indentation", start, start + ind.duration, ind.extra_angle});
+    data.phases.push_back({"indentation",
+                           start,
+                           start + ind.duration,
+                           ind.extra_angle,
+                           joint_unit});
   }
 
   void GraspSimulation::pull()
@@ -569,6 +572,6 @@ namespace softgrasp
       forward_kinematics(angles, slide0 + p.distance * s / p.samples);
       record(start + p.duration * s / p.samples, fk_data);
     }
-    data.phases.push_back({"pull", start, start + p.duration, p.distance});
+    data.phases.push_back({"pull", start, start + p.duration, p.distance, "m"});
   }
 } // namespace softgrasp

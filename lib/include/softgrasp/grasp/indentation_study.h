@@ -196,10 +196,12 @@ namespace softgrasp
     /// Assess the final state (all ranks); write and print it on rank 0.
     void assess_injury(const Simulation<3> &solver);
 
-    MPI_Comm                      comm;
-    GraspStudyParameters          parameters;
-    SolverInputs<3>               solver_inputs;
-    double                        extra_angle = 0;
+    MPI_Comm             comm;
+    GraspStudyParameters parameters;
+    SolverInputs<3>      solver_inputs;
+    double               extra_angle = 0;
+    /// The unit of extra_angle: rad (hinge fingers) or m (slide fingers).
+    std::string                   closure_unit = "rad";
     Summary                       result;
     HistoryWriter                 table;
     std::vector<LinkForceHistory> fe_links;

@@ -76,7 +76,10 @@ namespace softgrasp
       std::string name;
       double      start_time = 0; ///< s
       double      end_time   = 0; ///< s
-      double      amount     = 0; ///< rad or m, see the phase
+      double      amount     = 0; ///< in @p unit, see the phase
+      /// The unit of @p amount: "rad" (hinge fingers' closure), "m" (slide
+      /// fingers' closure, the pull's distance); "rad" in files without it.
+      std::string unit = "rad";
     };
 
     /// The phase called @p name; an InputError listing the phases if none.
