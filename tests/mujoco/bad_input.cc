@@ -1,7 +1,9 @@
 // Bad input to the MuJoCo bridge gives an InputError that names the cause
 // and the fix: a missing or malformed MJCF scene, an unknown joint (listing
 // the valid ones), a solref time constant MuJoCo 2.2 would clamp silently,
-// and an actuator target outside its ctrlrange (clamped silently by MuJoCo).
+// finger joints of two types (a hinge and a slide), a jaw whose positive
+// target opens it (it never touches; the message names the sign), and an
+// actuator target outside its ctrlrange (clamped silently by MuJoCo).
 #include "../tests.h"
 #include "grasp_helpers.h"
 
@@ -78,6 +80,46 @@ main()
   expect_error("solref under two time steps",
                [&] { GraspSimulation simulation(coarse, log); },
                {"solref", "0.004"});
+
+  // A hand mixing hinges and slide joints: refused with both names.
+  auto mixed          = good;
+  mixed.finger_joints = {"thumb_proximal_joint", "pull"};
+  expect_error("hinge and slide finger joints",
+               [&] { GraspSimulation simulation(mixed, log); },
+               {"'thumb_proximal_joint' and 'pull'", "one type"});
+
+  // A jaw whose positive target opens it (its axis flipped): it never
+  // touches, and the message names the sign.
+  {
+    const std::string  mjcf = std::string(PARAMETER_FILES) + "/mjcf/";
+    std::ifstream      gripper_in(mjcf + "parallel_jaw_gripper.xml");
+    std::ostringstream gripper;
+    gripper << gripper_in.rdbuf();
+    std::string jaw = gripper.str();
+    const auto  left =
+        jaw.find("\"left_jaw_joint\" class=\"jaw\" axis=\"1 0 0\"");
+    AssertThrow(left != std::string::npos, dealii::ExcMessage("jaw moved"));
+    jaw.replace(left, 41, "\"left_jaw_joint\" class=\"jaw\" axis=\"-1 0 0\"");
+    std::ofstream("parallel_jaw_gripper.xml") << jaw;
+    std::ifstream      scene_in(mjcf + "gripper_sphere_scene.xml");
+    std::ostringstream gripper_scene;
+    gripper_scene << scene_in.rdbuf();
+    std::ofstream("flipped_scene.xml") << gripper_scene.str();
+  }
+  auto flipped          = good;
+  flipped.scene_file    = "flipped_scene.xml";
+  flipped.finger_joints = {"left_jaw_joint", "right_jaw_joint"};
+  flipped.contact_links = {"left_pad", "right_pad"};
+  flipped.closing_speed = 0.05;
+  flipped.grip          = 0.002;
+  expect_error("a joint whose positive target opens it",
+               [&]
+               {
+                 GraspSimulation simulation(flipped, log);
+                 simulation.run();
+               },
+               {"'left_jaw_joint' reached the end of its ctrlrange",
+                "a positive target closes it"});
 
   auto tight = good;
   tight.grip = 2.0;

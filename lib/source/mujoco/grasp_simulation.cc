@@ -393,8 +393,10 @@ namespace softgrasp
         throw InputError(
             std::string("Joint '") + mj_id2name(m, mjOBJ_JOINT, j) +
             "' reached the end of its ctrlrange without touching the "
-            "object. Fix: move the hand closer to the object ('Rigid "
-            "environment/Base position') or check the scene.");
+            "object. Fix: check that a positive target closes it (its axis "
+            "must point the closing way: a joint that opens moves away from "
+            "the object), or move the hand closer to the object ('Rigid "
+            "environment/Base position').");
     }
     set_target(j, targets[k]);
   }
