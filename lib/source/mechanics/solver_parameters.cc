@@ -27,32 +27,7 @@ namespace softgrasp
         {"Chebyshev", AmgSmoother::chebyshev},
         {"Gauss-Seidel", AmgSmoother::gauss_seidel},
         {"symmetric Gauss-Seidel", AmgSmoother::symmetric_gauss_seidel}};
-    const std::vector<std::pair<std::string, ExistingResults>>
-        existing_results_names = {{"move aside", ExistingResults::move_aside},
-                                  {"replace", ExistingResults::replace},
-                                  {"refuse", ExistingResults::refuse}};
 
-    template <typename Enum>
-    std::string
-    selection(const std::vector<std::pair<std::string, Enum>> &table)
-    {
-      std::string out;
-      for (const auto &entry : table)
-        out += (out.empty() ? "" : "|") + entry.first;
-      return out;
-    }
-
-    // Patterns::Selection has already validated the name.
-    template <typename Enum>
-    Enum lookup(const std::vector<std::pair<std::string, Enum>> &table,
-                const std::string                               &name)
-    {
-      for (const auto &entry : table)
-        if (entry.first == name)
-          return entry.second;
-      throw InputError("Unknown choice '" + name +
-                       "'. Fix: use one of: " + selection(table) + ".");
-    }
   } // namespace
 
   void DiscretizationParameters::declare_parameters(ParameterHandler &prm)
@@ -66,7 +41,7 @@ namespace softgrasp
     prm.declare_entry(
         "Formulation",
         "mixed u-p-J",
-        Patterns::Selection(selection(formulation_names)),
+        Patterns::Selection(choice_pattern(formulation_names)),
         "'displacement': pure displacement (locks for Poisson's ratio near "
         "0.5). 'mixed u-p-J': three-field formulation with element-wise "
         "discontinuous pressure and dilatation of degree k-1, condensed per "
@@ -74,7 +49,7 @@ namespace softgrasp
     prm.declare_entry(
         "Pressure degree",
         "k-1",
-        Patterns::Selection(selection(pressure_degree_names)),
+        Patterns::Selection(choice_pattern(pressure_degree_names)),
         "Degree of the element-wise discontinuous pressure and dilatation of "
         "'mixed u-p-J' (k = 'Polynomial degree'). 'k-1': Q1-P0 and Q2-P1, "
         "the inf-sup stable pairs. '0': one pressure and dilatation per "
@@ -89,8 +64,8 @@ namespace softgrasp
   {
     prm.enter_subsection("Finite element");
     degree      = prm.get_integer("Polynomial degree");
-    formulation = lookup(formulation_names, prm.get("Formulation"));
-    pressure    = lookup(pressure_degree_names, prm.get("Pressure degree"));
+    formulation = lookup_choice(formulation_names, prm.get("Formulation"));
+    pressure = lookup_choice(pressure_degree_names, prm.get("Pressure degree"));
     prm.leave_subsection();
   }
 
@@ -349,7 +324,7 @@ namespace softgrasp
     prm.declare_entry(
         "Type",
         "automatic",
-        Patterns::Selection(selection(solver_names)),
+        Patterns::Selection(choice_pattern(solver_names)),
         "'direct': sparse LU (MUMPS through Amesos), robust, fastest for "
         "small problems, memory growing faster than the dofs. 'iterative': "
         "conjugate gradients (GMRES where follower pressure or sliding "
@@ -381,7 +356,7 @@ namespace softgrasp
     prm.declare_entry(
         "AMG smoother",
         "automatic",
-        Patterns::Selection(selection(smoother_names)),
+        Patterns::Selection(choice_pattern(smoother_names)),
         "Smoother on the levels of the ML AMG hierarchy. 'Chebyshev': a "
         "Chebyshev polynomial of the Jacobi-scaled matrix (symmetric, for "
         "CG and GMRES). 'Gauss-Seidel': Gauss-Seidel sweeps, local to each "
@@ -451,14 +426,14 @@ namespace softgrasp
   void LinearSolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    type                         = lookup(solver_names, prm.get("Type"));
+    type                         = lookup_choice(solver_names, prm.get("Type"));
     direct_limit                 = prm.get_integer("Direct solver limit");
     relative_tolerance           = prm.get_double("Relative tolerance");
     max_iterations               = prm.get_integer("Maximum iterations");
     aggregation_threshold        = prm.get_double("AMG aggregation threshold");
     reuse_symbolic_factorization = prm.get_bool("Reuse symbolic factorization");
-    smoother             = lookup(smoother_names, prm.get("AMG smoother"));
-    smoother_sweeps      = prm.get_integer("AMG smoother sweeps");
+    smoother        = lookup_choice(smoother_names, prm.get("AMG smoother"));
+    smoother_sweeps = prm.get_integer("AMG smoother sweeps");
     block_preconditioner = prm.get_bool("Block preconditioner");
     reuse_amg            = prm.get_bool("Reuse AMG");
     block_augmentation   = prm.get_double("Block preconditioner augmentation");
@@ -516,149 +491,6 @@ namespace softgrasp
     default:
       return "automatic";
     }
-  }
-
-  void OutputParameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Output");
-    prm.declare_entry("Directory",
-                      "output",
-                      Patterns::FileName(Patterns::FileName::output),
-                      "Directory of all output files; created if missing.");
-    prm.declare_entry("Base name",
-                      "solution",
-                      Patterns::FileName(Patterns::FileName::output),
-                      "Prefix of the VTU, PVD and CSV files.");
-    prm.declare_entry("VTU interval",
-                      "1",
-                      Patterns::Integer(0),
-                      "Write the fields every n-th converged step (and "
-                      "always the last one); 0 writes the last one only. "
-                      "Unit: 1.");
-    prm.declare_entry("Monitor points",
-                      "",
-                      Patterns::Anything(),
-                      "Reference positions whose displacement is recorded "
-                      "in the history CSV, separated by ';', coordinates "
-                      "by ',', e.g. '0.048, 0.060; 0, 0'. Unit: m.");
-    prm.declare_entry("Verbose",
-                      "true",
-                      Patterns::Bool(),
-                      "Print every Newton iteration (residual, line search, "
-                      "linear iterations) besides the per-step progress.");
-    prm.declare_entry(
-        "Existing results",
-        "move aside",
-        Patterns::Selection(selection(existing_results_names)),
-        "What a new run (not a resume) does with the results of an earlier "
-        "run in 'Directory', that is with the files and folders listed in "
-        "that run's manifest 'softgrasp-run-files.txt' whose size and "
-        "checksum match what it records: 'move aside' moves them into a "
-        "subfolder 'previous-run-<n>', 'replace' deletes them, 'refuse' "
-        "stops with an error. Nothing that a run cannot prove it wrote "
-        "(inputs, notes, folders, edited results) is ever deleted or "
-        "written over: a file in the way is moved into 'moved-aside-<n>' "
-        "first, and the log says so (doc/reliability.md).");
-    prm.leave_subsection();
-  }
-
-  namespace
-  {
-    /**
-     * Refuses an 'Output/Base name' that is not an ordinary file name
-     * prefix: empty, with '/' or a NUL, "." or ".." (hidden files such as
-     * '..pvd'), or too long for the file system once the longest suffix a
-     * run appends is added.
-     */
-    void check_base_name(const std::string &base_name)
-    {
-      // POSIX file systems allow 255 bytes per name; the longest suffix a
-      // run appends is about 40 bytes ("_history.csv.partial", a VTU
-      // file's step and rank numbers).
-      constexpr std::size_t longest_name = 255 - 40;
-      const std::string     entry =
-          "Parameter 'Output/Base name' is '" + base_name + "'";
-      const std::string named =
-          " (the files are named '<Base name>_00001.vtu', '<Base name>.pvd', "
-          "...). Fix: set a name such as 'solution', and choose the folder "
-          "with 'Output/Directory'.";
-      if (base_name.empty() || base_name.find('/') != std::string::npos ||
-          base_name.find('\0') != std::string::npos)
-        throw InputError(entry +
-                         ": it must be a non-empty file name prefix without "
-                         "'/'" +
-                         named);
-      if (base_name == "." || base_name == "..")
-        throw InputError(entry +
-                         ": it must be an ordinary file name prefix, not '.' "
-                         "or '..' (the files would be hidden, e.g. '" +
-                         base_name + ".pvd')" + named);
-      if (base_name.size() > longest_name)
-        throw InputError("Parameter 'Output/Base name' has " +
-                         std::to_string(base_name.size()) +
-                         " characters: a file name may have at most 255 "
-                         "bytes, and the run appends up to 40 to it, so the "
-                         "base name may have at most " +
-                         std::to_string(longest_name) + "." + named);
-    }
-  } // namespace
-
-  void OutputParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Output");
-    directory = prm.get("Directory");
-    base_name = prm.get("Base name");
-    check_base_name(base_name);
-    vtu_interval = prm.get_integer("VTU interval");
-    verbose      = prm.get_bool("Verbose");
-    existing_results =
-        lookup(existing_results_names, prm.get("Existing results"));
-    monitor_points.clear();
-    for (const std::string &point :
-         Utilities::split_string_list(prm.get("Monitor points"), ';'))
-    {
-      std::vector<double> coordinates;
-      try
-      {
-        coordinates = Utilities::string_to_double(
-            Utilities::split_string_list(point, ','));
-      }
-      catch (...)
-      {
-        coordinates.clear();
-      }
-      if (coordinates.empty())
-        throw InputError("Parameter 'Output/Monitor points' has the entry '" +
-                         point +
-                         "', which is not a list of numbers. Fix: write "
-                         "points as 'x, y[, z]' separated by ';' (m).");
-      monitor_points.push_back(coordinates);
-    }
-    prm.leave_subsection();
-  }
-
-  void CheckpointParameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Checkpoint");
-    prm.declare_entry("Interval",
-                      "0",
-                      Patterns::Integer(0),
-                      "Write a checkpoint every n-th converged step into "
-                      "<Output directory>/checkpoint; 0 = never. Unit: 1.");
-    prm.declare_entry("Resume",
-                      "false",
-                      Patterns::Bool(),
-                      "Restart from the last checkpoint in the output "
-                      "directory instead of from the reference state.");
-    prm.leave_subsection();
-  }
-
-  void CheckpointParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Checkpoint");
-    interval = prm.get_integer("Interval");
-    resume   = prm.get_bool("Resume");
-    prm.leave_subsection();
   }
 
   void ExplicitParameters::declare_parameters(ParameterHandler &prm)

@@ -3,7 +3,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
+#include <softgrasp/base/input_error.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace softgrasp
@@ -67,6 +69,31 @@ namespace softgrasp
   std::vector<std::string> entries_changed_from_default(
       dealii::ParameterHandler                              &prm,
       const std::function<void(dealii::ParameterHandler &)> &declare);
+
+  /// The choices of an enum's .prm spelling table @p table, "a|b|c", for
+  /// a Patterns::Selection.
+  template <typename Enum>
+  std::string
+  choice_pattern(const std::vector<std::pair<std::string, Enum>> &table)
+  {
+    std::string out;
+    for (const auto &entry : table)
+      out += (out.empty() ? "" : "|") + entry.first;
+    return out;
+  }
+
+  /// The value @p name spells in @p table (Patterns::Selection has
+  /// validated it; an InputError listing the choices otherwise).
+  template <typename Enum>
+  Enum lookup_choice(const std::vector<std::pair<std::string, Enum>> &table,
+                     const std::string                               &name)
+  {
+    for (const auto &entry : table)
+      if (entry.first == name)
+        return entry.second;
+    throw InputError("Unknown choice '" + name +
+                     "'. Fix: use one of: " + choice_pattern(table) + ".");
+  }
 } // namespace softgrasp
 
 #endif
