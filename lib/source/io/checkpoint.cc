@@ -172,19 +172,21 @@ namespace softgrasp
   }
 
   template <int dim>
-  void Checkpoint<dim>::write_manifest(const std::string &path) const
+  void Checkpoint<dim>::write_manifest(
+      const std::string                                      &path,
+      const std::vector<std::pair<std::string, std::string>> &data_files) const
   {
-    std::vector<std::string> names;
-    for (const auto &entry : fs::directory_iterator(path))
-      if (entry.is_regular_file() && entry.path().filename() != manifest_name)
-        names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
+    // the data files' proofs as the run state lists them (hashed once),
+    // and the state itself
+    auto files = data_files;
+    files.emplace_back("state.txt",
+                       entry_fingerprint(fs::path(path) / "state.txt"));
+    std::sort(files.begin(), files.end());
     std::ostringstream out;
     out << "softgrasp checkpoint " << format_version << "\ndimension " << dim
         << "\n";
-    for (const auto &name : names)
-      out << "file " << name << " " << fs::file_size(fs::path(path) / name)
-          << " " << file_checksum(fs::path(path) / name) << "\n";
+    for (const auto &[name, proof] : files)
+      out << "file " << name << " " << proof << "\n";
     for (const auto &[name, value] : settings)
       out << "setting " << name << " = " << value << "\n";
     out << "end\n";
@@ -289,7 +291,7 @@ namespace softgrasp
         if (!out)
           throw InputError("Cannot write '" + partial + "/state.txt'.");
       }
-      write_manifest(partial);
+      write_manifest(partial, state.data_files);
       // Keep the last good checkpoint until the new one is in place.
       if (fs::exists(target))
       {

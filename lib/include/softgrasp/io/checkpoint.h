@@ -141,7 +141,11 @@ namespace softgrasp
     std::string damage(const std::string &path) const;
     /// The settings that differ from @p path's manifest ("" if none).
     std::string changed_settings(const std::string &path) const;
-    void        write_manifest(const std::string &path) const;
+    /// The manifest of the folder @p path: @p data_files (the run state's
+    /// list, "<size> <checksum>" each) and state.txt.
+    void write_manifest(const std::string &path,
+                        const std::vector<std::pair<std::string, std::string>>
+                            &data_files) const;
 
     std::string directory;
     Settings    settings;
