@@ -13,31 +13,7 @@
 
 using namespace softgrasp;
 
-namespace
-{
-  template <typename F>
-  void expect_error(const std::string              &what,
-                    F                               f,
-                    const std::vector<std::string> &needles)
-  {
-    std::string message = "no error";
-    try
-    {
-      f();
-    }
-    catch (const InputError &e)
-    {
-      message = e.what();
-    }
-    bool found = message.find("Fix:") != std::string::npos;
-    for (const auto &n : needles)
-      found = found && message.find(n) != std::string::npos;
-    dealii::deallog << what << ": clear error " << found << std::endl;
-    if (!found)
-      std::cerr << message << std::endl;
-    SG_CHECK(found, what);
-  }
-} // namespace
+using softgrasp_tests::expect_input_error;
 
 int
 main()
@@ -48,19 +24,19 @@ main()
   const auto         good = softgrasp_tests::sphere_grasp_parameters(prm);
   std::ostringstream log;
 
-  expect_error("missing scene",
-               [] { MujocoModel model("no-such-scene.xml"); },
-               {"no-such-scene.xml", "Cannot open"});
+  expect_input_error("missing scene",
+                     [] { MujocoModel model("no-such-scene.xml"); },
+                     {"no-such-scene.xml", "Cannot open"});
   std::ofstream("malformed.xml") << "<mujoco><worldbody><body>\n</mujoco>\n";
-  expect_error("malformed scene",
-               [] { MujocoModel model("malformed.xml"); },
-               {"malformed.xml", "MuJoCo could not load"});
+  expect_input_error("malformed scene",
+                     [] { MujocoModel model("malformed.xml"); },
+                     {"malformed.xml", "MuJoCo could not load"});
 
   auto unknown          = good;
   unknown.finger_joints = {"thumb_proximal_joint", "index_joint"};
-  expect_error("unknown joint",
-               [&] { GraspSimulation simulation(unknown, log); },
-               {"'index_joint'", "thumb_distal_joint"});
+  expect_input_error("unknown joint",
+                     [&] { GraspSimulation simulation(unknown, log); },
+                     {"'index_joint'", "thumb_distal_joint"});
 
   std::ifstream      in(good.scene_file);
   std::ostringstream scene;
@@ -77,16 +53,16 @@ main()
     std::ofstream("three_finger_hand.xml") << hand.str();
     std::ofstream("coarse_scene.xml") << text;
   }
-  expect_error("solref under two time steps",
-               [&] { GraspSimulation simulation(coarse, log); },
-               {"solref", "0.004"});
+  expect_input_error("solref under two time steps",
+                     [&] { GraspSimulation simulation(coarse, log); },
+                     {"solref", "0.004"});
 
   // A hand mixing hinges and slide joints: refused with both names.
   auto mixed          = good;
   mixed.finger_joints = {"thumb_proximal_joint", "pull"};
-  expect_error("hinge and slide finger joints",
-               [&] { GraspSimulation simulation(mixed, log); },
-               {"'thumb_proximal_joint' and 'pull'", "one type"});
+  expect_input_error("hinge and slide finger joints",
+                     [&] { GraspSimulation simulation(mixed, log); },
+                     {"'thumb_proximal_joint' and 'pull'", "one type"});
 
   // A jaw whose positive target opens it (its axis flipped): it never
   // touches, and the message names the sign.
@@ -112,22 +88,22 @@ main()
   flipped.contact_links = {"left_pad", "right_pad"};
   flipped.closing_speed = 0.05;
   flipped.grip          = 0.002;
-  expect_error("a joint whose positive target opens it",
-               [&]
-               {
-                 GraspSimulation simulation(flipped, log);
-                 simulation.run();
-               },
-               {"'left_jaw_joint' reached the end of its ctrlrange",
-                "a positive target closes it"});
+  expect_input_error("a joint whose positive target opens it",
+                     [&]
+                     {
+                       GraspSimulation simulation(flipped, log);
+                       simulation.run();
+                     },
+                     {"'left_jaw_joint' reached the end of its ctrlrange",
+                      "a positive target closes it"});
 
   auto tight = good;
   tight.grip = 2.0;
-  expect_error("target outside ctrlrange",
-               [&]
-               {
-                 GraspSimulation simulation(tight, log);
-                 simulation.run();
-               },
-               {"ctrlrange", "'Grip'"});
+  expect_input_error("target outside ctrlrange",
+                     [&]
+                     {
+                       GraspSimulation simulation(tight, log);
+                       simulation.run();
+                     },
+                     {"ctrlrange", "'Grip'"});
 }

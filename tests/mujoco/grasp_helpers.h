@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <softgrasp/base/input_error.h>
 #include <softgrasp/grasp/arm_grasp_study.h>
 #include <softgrasp/grasp/indentation_study.h>
 #include <softgrasp/grasp/pull_sweep_study.h>
+#include <softgrasp/io/kinematics_file.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
 #include <softgrasp/mujoco/grasp_pull_sweep.h>
 #include <softgrasp/solvers/solver_program.h>
@@ -152,6 +154,80 @@ namespace softgrasp_tests
     return diff / largest;
   }
 
+  /// Log whether @p f throws an InputError whose message has a fix and
+  /// every one of @p needles (printing it if not), and check that it does.
+  template <typename F>
+  void expect_input_error(const std::string              &what,
+                          F                               f,
+                          const std::vector<std::string> &needles)
+  {
+    std::string message = "no error";
+    try
+    {
+      f();
+    }
+    catch (const softgrasp::InputError &e)
+    {
+      message = e.what();
+    }
+    bool found = message.find("Fix:") != std::string::npos;
+    for (const auto &n : needles)
+      found = found && message.find(n) != std::string::npos;
+    dealii::deallog << what << ": clear error " << found << std::endl;
+    if (!found)
+      std::cerr << message << std::endl;
+    SG_CHECK(found, what);
+  }
+
+  /// The equilibrium forces of a kinematics file on a free object: how
+  /// many links touch, the smallest and largest force (N) and |sum| (N).
+  struct EquilibriumBalance
+  {
+    std::size_t links    = 0;
+    double      smallest = 1e300, largest = 0, sum = 0;
+  };
+  inline EquilibriumBalance
+  equilibrium_balance(const softgrasp::KinematicsData &data)
+  {
+    EquilibriumBalance result;
+    Eigen::Vector3d    sum = Eigen::Vector3d::Zero();
+    for (const auto &f : data.equilibrium_forces)
+    {
+      sum += f.force;
+      result.smallest = std::min(result.smallest, f.force.norm());
+      result.largest  = std::max(result.largest, f.force.norm());
+      ++result.links;
+    }
+    result.sum = sum.norm();
+    return result;
+  }
+
+  /**
+   * Over the indentation phase of @p data, the largest deviation (m) of a
+   * geom named in @p names from moving @p distance along x, as the rigid
+   * bodies built from the file place it; @p found counts the geoms.
+   */
+  inline double indentation_travel_error(const softgrasp::KinematicsData &data,
+                                         const std::vector<std::string>  &names,
+                                         const double  distance,
+                                         unsigned int &found)
+  {
+    const auto &phase  = data.phase("indentation");
+    const auto  bodies = softgrasp::rigid_bodies_from(data);
+    double      error  = 0;
+    found              = 0;
+    for (const auto &body : bodies.bodies())
+      for (unsigned int g = 0; g < body.geoms().size(); ++g)
+        if (std::find(names.begin(), names.end(), body.geoms()[g].name) !=
+            names.end())
+        {
+          const double start = body.geom_pose(g, phase.start_time).position[0];
+          const double end   = body.geom_pose(g, phase.end_time).position[0];
+          error = std::max(error, std::abs(std::abs(start - end) - distance));
+          ++found;
+        }
+    return error;
+  }
 } // namespace softgrasp_tests
 
 #endif

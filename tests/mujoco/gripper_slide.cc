@@ -39,37 +39,19 @@ main()
   write_kinematics_file(simulation.run(), "kinematics.h5");
   const KinematicsData data = read_kinematics_file("kinematics.h5");
 
-  Eigen::Vector3d sum      = Eigen::Vector3d::Zero();
-  double          smallest = 1e9, largest = 0;
-  for (const auto &f : data.equilibrium_forces)
-    if (f.geom == "left_pad" || f.geom == "right_pad")
-    {
-      sum += f.force;
-      smallest = std::min(smallest, f.force.norm());
-      largest  = std::max(largest, f.force.norm());
-    }
-  SG_CHECK(smallest > 1, "both pads pressed by more than 1 N");
-  SG_CHECK(sum.norm() < 0.01 * largest, "the pads' forces balance");
+  const auto balance = softgrasp_tests::equilibrium_balance(data);
+  SG_CHECK(balance.links == 2 && balance.smallest > 1,
+           "both pads pressed by more than 1 N");
+  SG_CHECK(balance.sum < 0.01 * balance.largest, "the pads' forces balance");
   dealii::deallog << "both pads touch at the equilibrium with more than 1 N "
                      "each, forces balanced within 1 %: 1"
                   << std::endl;
 
   const auto &phase = data.phase("indentation");
   SG_CHECK(std::abs(phase.amount - 0.001) < 1e-15, "closure recorded in m");
-  const RigidBodySet bodies = rigid_bodies_from(data);
-  double             moved  = 0;
-  unsigned int       pads   = 0;
-  for (const auto &body : bodies.bodies())
-    for (unsigned int g = 0; g < body.geoms().size(); ++g)
-      if (body.geoms()[g].name == "left_pad" ||
-          body.geoms()[g].name == "right_pad")
-      {
-        // moved along x, towards the sphere, relative to the base
-        const double start = body.geom_pose(g, phase.start_time).position[0];
-        const double end   = body.geom_pose(g, phase.end_time).position[0];
-        moved = std::max(moved, std::abs(std::abs(start - end) - 0.001));
-        ++pads;
-      }
+  unsigned int pads  = 0;
+  const double moved = softgrasp_tests::indentation_travel_error(
+      data, {"left_pad", "right_pad"}, 0.001, pads);
   SG_CHECK(pads == 2 && moved < 1e-9, "the pads close 1 mm each");
   dealii::deallog << "indentation of 1 mm recorded, both pads moved 1 mm: 1"
                   << std::endl;

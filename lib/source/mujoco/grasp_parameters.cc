@@ -40,16 +40,32 @@ namespace softgrasp
           "Finger joints",
           "thumb_proximal_joint, thumb_distal_joint, finger1_proximal_joint, "
           "finger1_distal_joint, finger2_proximal_joint, finger2_distal_joint",
-          Patterns::List(Patterns::Anything(), 1),
-          "Joints that close the hand, each driven by a position actuator "
-          "whose positive target closes: hinges (a finger), or slide "
-          "joints (a parallel jaw), all of one type.");
+          Patterns::List(Patterns::Anything(), 0),
+          "Joints that close the hand, each driven by its own position "
+          "actuator whose positive target closes: hinges (a finger), or "
+          "slide joints (a parallel jaw), all of one type. Leave empty when "
+          "'Closing actuators' names the actuators instead.");
+      prm.declare_entry(
+          "Closing actuators",
+          "",
+          Patterns::List(Patterns::Anything(), 0),
+          "Position actuators that close the hand, each with the joints it "
+          "moves: its joint, or the joints of its <fixed> tendon, and every "
+          "joint an <equality joint=...> couples to them (one actuator may "
+          "close a whole underactuated gripper). Write '-name' for an "
+          "actuator whose target closes the hand as it decreases. Each "
+          "target ramps at the closing speed until every joint it moves has "
+          "a link of its subtree on the object; closures are in the "
+          "actuator's length (gear x joint coordinate, or tendon length). "
+          "Empty: 'Finger joints' closes the hand.");
       prm.declare_entry(
           "Contact links",
           "thumb_proximal_link, thumb_distal_link, finger1_proximal_link, "
           "finger1_distal_link, finger2_proximal_link, finger2_distal_link",
           Patterns::List(Patterns::Anything(), 0),
-          "Geoms that must touch the object at the equilibrium grasp.");
+          "Geoms that must touch the object at the equilibrium grasp; "
+          "empty: none is required, and the run reports every geom of the "
+          "hand that touches it.");
       prm.declare_entry("Closing speed",
                         "0.5",
                         Patterns::Double(0),
@@ -179,6 +195,7 @@ namespace softgrasp
                        "1, 0, 0, 0.");
     base_orientation   = raw.normalized();
     finger_joints      = names(prm.get("Finger joints"));
+    closing_actuators  = names(prm.get("Closing actuators"));
     contact_links      = names(prm.get("Contact links"));
     closing_speed      = section.get_positive("Closing speed", "rad/s");
     grip               = section.get_positive("Grip", "rad", true);
@@ -196,14 +213,17 @@ namespace softgrasp
       for (const auto &w :
            Utilities::split_string_list(prm.get("Joint weights")))
         indentation.joint_weights.push_back(Utilities::string_to_double(w));
+      const std::size_t drives = closing_actuators.empty()
+                                     ? finger_joints.size()
+                                     : closing_actuators.size();
       if (!indentation.joint_weights.empty() &&
-          indentation.joint_weights.size() != finger_joints.size())
+          indentation.joint_weights.size() != drives)
         throw InputError(
             "'Rigid environment/Indentation/Joint weights' has " +
             std::to_string(indentation.joint_weights.size()) + " values for " +
-            std::to_string(finger_joints.size()) +
-            " finger joints. Fix: give one weight per joint of 'Finger "
-            "joints', or none.");
+            std::to_string(drives) +
+            " drives. Fix: give one weight per entry of 'Closing actuators' "
+            "(or 'Finger joints' if that is empty), or none.");
       indentation.duration    = s.get_positive("Duration", "s");
       indentation.settle_time = s.get_positive("Settle time", "s");
     }

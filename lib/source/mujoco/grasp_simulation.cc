@@ -56,32 +56,11 @@ namespace softgrasp
     const mjModel *m = mujoco.model();
     object_body      = mujoco.id(mjOBJ_BODY, parameters.object_body, "body");
     base_body        = mujoco.id(mjOBJ_BODY, parameters.base_body, "body");
-    for (const auto &name : parameters.finger_joints)
-    {
-      const int j = mujoco.id(mjOBJ_JOINT, name, "joint");
-      const int a = mujoco.actuator_of_joint(j);
-      if ((m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) ||
-          a < 0)
-        throw InputError("Finger joint '" + name + "' of the scene '" +
-                         mujoco.file +
-                         "' is not a hinge or slide joint driven by an "
-                         "actuator. Fix: list hinge or slide joints with "
-                         "<position> actuators in 'Rigid environment/Finger "
-                         "joints'.");
-      const std::string unit = m->jnt_type[j] == mjJNT_HINGE ? "rad" : "m";
-      if (!finger_joints.empty() && unit != joint_unit)
-        throw InputError(
-            "Finger joints '" +
-            std::string(mj_id2name(m, mjOBJ_JOINT, finger_joints.front())) +
-            "' and '" + name + "' of the scene '" + mujoco.file +
-            "' are a hinge and a slide joint: 'Closing speed', 'Grip' and "
-            "'Extra joint angle' are in one unit for all of them (rad, or m "
-            "for slide joints). Fix: list joints of one type in 'Rigid "
-            "environment/Finger joints'.");
-      joint_unit = unit;
-      finger_joints.push_back(j);
-      finger_actuators.push_back(a);
-    }
+    drives           = hand_drives(mujoco,
+                         parameters.finger_joints,
+                         parameters.closing_actuators,
+                         parameters.indentation.joint_weights,
+                         joint_unit);
     for (const auto &name : parameters.contact_links)
       required_links.push_back(mujoco.id(mjOBJ_GEOM, name, "geom"));
     // The slide joint is recorded whenever the scene has it (the base may
@@ -99,8 +78,14 @@ namespace softgrasp
                          "' is not a slide joint with an actuator. Fix: name "
                          "the base's slide joint.");
     }
-    recorded_joints    = finger_joints;
-    recorded_actuators = finger_actuators;
+    for (const auto &drive : drives)
+      for (const int j : drive.joints)
+        if (std::find(recorded_joints.begin(), recorded_joints.end(), j) ==
+            recorded_joints.end())
+        {
+          recorded_joints.push_back(j);
+          recorded_actuators.push_back(drive.actuator);
+        }
     if (slide_joint >= 0)
     {
       recorded_joints.push_back(slide_joint);
@@ -137,12 +122,8 @@ namespace softgrasp
       mj_deleteData(fk_data);
     if (equilibrium_data)
       mj_deleteData(equilibrium_data);
-  }
-
-  double GraspSimulation::weight(const std::size_t k) const
-  {
-    const auto &w = parameters.indentation.joint_weights;
-    return w.empty() ? 1.0 : w[k];
+    if (closing_start)
+      mj_deleteData(closing_start);
   }
 
   const MujocoModel &GraspSimulation::model() const
@@ -239,16 +220,24 @@ namespace softgrasp
     return name ? name : "unnamed";
   }
 
-  bool GraspSimulation::touches_object(const int body) const
+  bool GraspSimulation::touches_object(const int     body,
+                                       const bool    subtree,
+                                       const mjData *data) const
   {
-    const mjModel *m = mujoco.model();
-    const mjData  *d = mujoco.data();
+    const mjModel *m     = mujoco.model();
+    const mjData  *d     = data ? data : mujoco.data();
+    auto           below = [&](int b)
+    {
+      for (; b > 0; b = subtree ? m->body_parentid[b] : 0)
+        if (b == body)
+          return true;
+      return false;
+    };
     for (int c = 0; c < d->ncon; ++c)
     {
       const int b1 = m->geom_bodyid[d->contact[c].geom1];
       const int b2 = m->geom_bodyid[d->contact[c].geom2];
-      if ((b1 == body && b2 == object_body) ||
-          (b2 == body && b1 == object_body))
+      if ((below(b1) && b2 == object_body) || (below(b2) && b1 == object_body))
         return true;
     }
     return false;
@@ -267,8 +256,12 @@ namespace softgrasp
 
   void GraspSimulation::set_target(const int joint, const double value)
   {
+    set_control(mujoco.actuator_of_joint(joint), value);
+  }
+
+  void GraspSimulation::set_control(const int a, const double value)
+  {
     const mjModel *m = mujoco.model();
-    const int      a = mujoco.actuator_of_joint(joint);
     // MuJoCo 2.2 clamps ctrl to ctrlrange without a word: say it instead.
     if (m->actuator_ctrllimited[a] &&
         (value < m->actuator_ctrlrange[2 * a] - 1e-12 ||
@@ -358,49 +351,6 @@ namespace softgrasp
     return false;
   }
 
-  void GraspSimulation::close_joint(const std::size_t    k,
-                                    std::vector<bool>   &touched,
-                                    std::vector<double> &targets)
-  {
-    const mjModel *m  = mujoco.model();
-    mjData        *d  = mujoco.data();
-    const double   dt = m->opt.timestep;
-    const int      j  = finger_joints[k];
-    // A joint starts closing once its parent link's joint has touched
-    // (proximal before distal: the finger wraps around the object).
-    bool parent_closing = false;
-    for (std::size_t p = 0; p < finger_joints.size(); ++p)
-      parent_closing = parent_closing ||
-                       (!touched[p] && m->jnt_bodyid[finger_joints[p]] ==
-                                           m->body_parentid[m->jnt_bodyid[j]]);
-    if (parent_closing)
-      return;
-    if (touches_object(m->jnt_bodyid[j]))
-    {
-      touched[k] = true;
-      targets[k] = d->qpos[m->jnt_qposadr[j]] + parameters.grip;
-      log << "  t = " << std::setw(6) << d->time
-          << " s: " << mj_id2name(m, mjOBJ_JOINT, j) << " touches at "
-          << d->qpos[m->jnt_qposadr[j]] << " " << joint_unit << ", target "
-          << targets[k] << " " << joint_unit << "\n";
-    }
-    else
-    {
-      targets[k] += parameters.closing_speed * dt;
-      const int a = finger_actuators[k];
-      if (m->actuator_ctrllimited[a] &&
-          targets[k] > m->actuator_ctrlrange[2 * a + 1])
-        throw InputError(
-            std::string("Joint '") + mj_id2name(m, mjOBJ_JOINT, j) +
-            "' reached the end of its ctrlrange without touching the "
-            "object. Fix: check that a positive target closes it (its axis "
-            "must point the closing way: a joint that opens moves away from "
-            "the object), or move the hand closer to the object ('Rigid "
-            "environment/Base position').");
-    }
-    set_target(j, targets[k]);
-  }
-
   void GraspSimulation::hold_until_settled()
   {
     const mjModel *m = mujoco.model();
@@ -441,8 +391,27 @@ namespace softgrasp
     if (equilibrium_data == nullptr)
       equilibrium_data = mujoco.make_data();
     mj_copyData(equilibrium_data, m, d);
-    for (const int a : finger_actuators)
-      equilibrium_targets.push_back(d->ctrl[a]);
+    for (const auto &drive : drives)
+      equilibrium_targets.push_back(d->ctrl[drive.actuator]);
+    if (std::any_of(drives.begin(),
+                    drives.end(),
+                    [](const HandDrive &drive) { return drive.coupled; }))
+    { // the loaded hand at the equilibrium targets: where closures start
+      equilibrium_load = contact_generalized_force(m, d);
+      bool settled     = false;
+      free_baseline    = loaded_hand_qpos(mujoco.model(),
+                                       d,
+                                       equilibrium_load,
+                                       drives,
+                                       equilibrium_targets,
+                                       1e-2 * parameters.velocity_tolerance,
+                                       parameters.settle_window,
+                                       parameters.maximum_time,
+                                       settled);
+      if (!settled)
+        log << "MuJoCo: the loaded hand did not come to rest within "
+               "'Maximum time' at the equilibrium targets\n";
+    }
     const auto forces = link_contact_forces(m, d, object_body, link_geoms);
     log << "MuJoCo: equilibrium grasp at t = " << d->time << " s\n";
     for (std::size_t k = 0; k < link_geoms.size(); ++k)
@@ -460,52 +429,58 @@ namespace softgrasp
       }
   }
 
-  void GraspSimulation::close_to_equilibrium()
+  void GraspSimulation::apply_closure(const double closure)
   {
-    const mjModel      *m = mujoco.model();
-    mjData             *d = mujoco.data();
-    std::vector<bool>   touched(finger_joints.size(), false);
-    std::vector<double> targets(finger_joints.size());
-    for (std::size_t k = 0; k < finger_joints.size(); ++k)
-    {
-      targets[k] = d->qpos[m->jnt_qposadr[finger_joints[k]]];
-      set_target(finger_joints[k], targets[k]);
-    }
-    log << "MuJoCo: closing the hand at " << parameters.closing_speed << " "
-        << joint_unit << "/s, grip " << parameters.grip << " " << joint_unit
-        << " beyond first touch\n";
-    double next_sample = 0;
-    record(0, d);
-    while (std::find(touched.begin(), touched.end(), false) != touched.end())
-    {
-      if (d->time > parameters.maximum_time)
-        throw InputError("The hand did not touch the object with every "
-                         "finger joint's link within 'Maximum time' (" +
-                         std::to_string(parameters.maximum_time) +
-                         " s). Fix: move the hand closer ('Base position') or "
-                         "raise the maximum time.");
-      for (std::size_t k = 0; k < finger_joints.size(); ++k)
-        if (!touched[k])
-          close_joint(k, touched, targets);
-      mj_step(m, d);
-      if (d->time >= next_sample)
-      {
-        record(d->time, d);
-        next_sample += parameters.sample_interval;
-      }
-    }
-    hold_until_settled();
-    record_equilibrium();
+    for (std::size_t k = 0; k < drives.size(); ++k)
+      set_control(drives[k].actuator,
+                  equilibrium_targets[k] +
+                      drives[k].sign * drives[k].weight * closure);
   }
 
-  void
-  GraspSimulation::forward_kinematics(const std::vector<double> &finger_angles,
-                                      const double               slide)
+  void GraspSimulation::closed_pose(const double closure, const double slide)
   {
-    const mjModel *m = mujoco.model();
+    mjModel *m = mujoco.model();
     std::copy(equilibrium_qpos.begin(), equilibrium_qpos.end(), fk_data->qpos);
-    for (std::size_t k = 0; k < finger_joints.size(); ++k)
-      fk_data->qpos[m->jnt_qposadr[finger_joints[k]]] = finger_angles[k];
+    const bool coupled =
+        std::any_of(drives.begin(),
+                    drives.end(),
+                    [](const HandDrive &drive) { return drive.coupled; });
+    if (!coupled) // one joint per drive at gear 1: the closure itself
+      for (const auto &drive : drives)
+        fk_data->qpos[m->jnt_qposadr[drive.joints.front()]] +=
+            drive.sign * drive.weight * closure;
+    else
+    {
+      if (closure != free_closure)
+      {
+        std::vector<double> controls;
+        for (std::size_t k = 0; k < drives.size(); ++k)
+          controls.push_back(equilibrium_targets[k] +
+                             drives[k].sign * drives[k].weight * closure);
+        bool settled = false;
+        free_qpos    = loaded_hand_qpos(m,
+                                     equilibrium_data,
+                                     equilibrium_load,
+                                     drives,
+                                     controls,
+                                     1e-2 * parameters.velocity_tolerance,
+                                     parameters.settle_window,
+                                     parameters.maximum_time,
+                                     settled);
+        free_closure = closure;
+        if (!settled)
+          log << "  (the loaded hand did not come to rest within "
+                 "'Maximum time' at closure "
+              << closure << ")\n";
+      }
+      // the equilibrium pose plus the loaded hand's motion from its baseline
+      for (const int j : recorded_joints)
+        if (j != slide_joint)
+        {
+          const int q = m->jnt_qposadr[j];
+          fk_data->qpos[q] += free_qpos[q] - free_baseline[q];
+        }
+    }
     if (slide_joint >= 0)
       fk_data->qpos[m->jnt_qposadr[slide_joint]] = slide;
     mj_kinematics(m, fk_data);
@@ -519,24 +494,16 @@ namespace softgrasp
     const double   slide0 =
         slide_joint >= 0 ? equilibrium_qpos[m->jnt_qposadr[slide_joint]] : 0;
     log << "MuJoCo: indentation, " << ind.extra_angle << " " << joint_unit
-        << " more on "
-        << (ind.joint_weights.empty() ? "every finger joint"
-                                      : "the finger joints (times their "
-                                        "weights)")
+        << " more on " << (ind.joint_weights.empty() ? "every " : "the ")
+        << (drives.front().subtree_touch ? "closing actuator" : "finger joint")
+        << (ind.joint_weights.empty() ? "" : "s (times their weights)")
         << " in " << ind.samples << " samples\n";
     for (unsigned int s = 1; s <= ind.samples; ++s)
     {
-      const double        closure = ind.extra_angle * s / ind.samples;
-      std::vector<double> angles;
-      for (std::size_t k = 0; k < finger_joints.size(); ++k)
-      {
-        set_target(finger_joints[k],
-                   equilibrium_targets[k] + weight(k) * closure);
-        angles.push_back(equilibrium_qpos[m->jnt_qposadr[finger_joints[k]]] +
-                         weight(k) * closure);
-      }
+      const double closure = ind.extra_angle * s / ind.samples;
+      apply_closure(closure);
       const bool settled = settle(ind.settle_time, false);
-      forward_kinematics(angles, slide0);
+      closed_pose(closure, slide0);
       record(start + ind.duration * s / ind.samples, fk_data);
       log << "  closure " << std::setw(6) << closure << " " << joint_unit
           << (settled ? "" : " (MuJoCo not settled within 'Settle time')")
@@ -551,15 +518,11 @@ namespace softgrasp
 
   void GraspSimulation::pull()
   {
-    const mjModel      *m      = mujoco.model();
-    mjData             *d      = mujoco.data();
-    const auto         &p      = parameters.pull;
-    const double        start  = data.time.back();
-    const double        slide0 = equilibrium_qpos[m->jnt_qposadr[slide_joint]];
-    std::vector<double> angles;
-    for (std::size_t k = 0; k < finger_joints.size(); ++k)
-      angles.push_back(equilibrium_qpos[m->jnt_qposadr[finger_joints[k]]] +
-                       weight(k) * parameters.indentation.extra_angle);
+    const mjModel *m      = mujoco.model();
+    mjData        *d      = mujoco.data();
+    const auto    &p      = parameters.pull;
+    const double   start  = data.time.back();
+    const double   slide0 = equilibrium_qpos[m->jnt_qposadr[slide_joint]];
     log << "MuJoCo: pull of " << p.distance << " m in " << p.duration << " s\n";
     const double t0 = d->time;
     for (unsigned int s = 1; s <= p.samples; ++s)
@@ -571,7 +534,8 @@ namespace softgrasp
         set_target(slide_joint, slide0 + p.distance * fraction);
         mj_step(m, d);
       }
-      forward_kinematics(angles, slide0 + p.distance * s / p.samples);
+      closed_pose(parameters.indentation.extra_angle,
+                  slide0 + p.distance * s / p.samples);
       record(start + p.duration * s / p.samples, fk_data);
     }
     data.phases.push_back({"pull", start, start + p.duration, p.distance, "m"});

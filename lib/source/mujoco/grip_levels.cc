@@ -27,9 +27,7 @@ namespace softgrasp
     const mjModel *m = mujoco.model();
     mjData        *d = mujoco.data();
     mj_copyData(d, m, equilibrium_data);
-    for (std::size_t k = 0; k < finger_joints.size(); ++k)
-      set_target(finger_joints[k],
-                 equilibrium_targets[k] + weight(k) * closure);
+    apply_closure(closure);
     const double end     = d->time + settings.settle_time;
     const double average = end - parameters.settle_window;
     double       sum = 0, weight = 0;

@@ -26,6 +26,9 @@ namespace softgrasp
     Eigen::Vector3d          base_position;    ///< m, world
     Eigen::Quaterniond       base_orientation; ///< w, x, y, z
     std::vector<std::string> finger_joints; ///< hinge or slide, with actuators
+    /// Position actuators that close the hand ("-name": closes as its
+    /// target decreases); if given, 'finger_joints' must be empty.
+    std::vector<std::string> closing_actuators;
     std::vector<std::string> contact_links; ///< geoms touching at equilibrium
     double                   closing_speed = 0.5; ///< rad/s (m/s: slide joints)
     double                   grip = 0.1; ///< rad (m) beyond first touch
@@ -38,8 +41,9 @@ namespace softgrasp
     struct Indentation
     {
       double extra_angle = 0.2; ///< rad (m) added to every finger joint
-      /// Per finger joint, the fraction of extra_angle it closes (1 each
-      /// if empty); also how the grip levels raise the actuator targets.
+      /// Per closing actuator (or finger joint), the fraction of extra_angle
+      /// it closes (1 each if empty); also how the grip levels raise the
+      /// actuator targets.
       std::vector<double> joint_weights;
       unsigned int        samples     = 10; ///< steps of the closure
       double              duration    = 1;  ///< s, pseudo-time of the phase

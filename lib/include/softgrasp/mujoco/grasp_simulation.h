@@ -6,6 +6,7 @@
 #include <softgrasp/io/kinematics_file.h>
 #include <softgrasp/mujoco/grasp_parameters.h>
 #include <softgrasp/mujoco/grip_levels.h>
+#include <softgrasp/mujoco/hand_drive.h>
 #include <softgrasp/mujoco/link_forces.h>
 #include <softgrasp/mujoco/mujoco_model.h>
 
@@ -17,16 +18,21 @@ namespace softgrasp
    * element solver replays, all into one KinematicsData (written with
    * write_kinematics_file()):
    *
-   *  1. "closing": every finger joint's actuator target ramps at the
-   *     closing speed until that joint's link touches the object, then is
-   *     set to the touch angle plus the grip; the simulation continues
-   *     until the equilibrium state: every contact link touches, every
-   *     joint is at rest and the link forces have settled. Recorded from
-   *     MuJoCo's state (simulated time).
-   *  2. "indentation": the finger joints are closed further, by
-   *     extra_angle * k/samples (times each joint's weight). The recorded poses
-   * are MuJoCo's forward kinematics of the equilibrium angles plus that closure
-   * with the object where it was (what the finite element solver drives); the
+   *  1. "closing": every drive's actuator target (HandDrive: a finger
+   *     joint's own actuator, or a closing actuator with the joints it
+   *     moves) ramps at the closing speed until its joints touch the
+   *     object, then is set to the actuator length at touch plus the grip;
+   *     the simulation continues until the equilibrium state: every contact
+   *     link touches, every joint is at rest and the link forces have
+   *     settled. Recorded from MuJoCo's state (simulated time).
+   *  2. "indentation": the drives close further, by extra_angle * k/samples
+   *     (times each drive's weight). The recorded poses are the
+   *     equilibrium pose plus that closure, with the object where it was
+   *     (what the finite element solver drives): forward kinematics for
+   *     drives that move one joint at gear 1; otherwise the motion the
+   *     same command gives the hand with the object's contact forces held
+   *     at their equilibrium values (loaded_hand_qpos()), so couplings,
+   *     tendons, gears and springs are honoured. The
    *     recorded forces are MuJoCo's own, settled at the same actuator
    *     targets (the rigid model's answer to the same command).
    *  3. "pull" (if a distance is set): the base moves along the slide
@@ -60,12 +66,28 @@ namespace softgrasp
   private:
     void place_base();
     void close_to_equilibrium();
-    /// One time step of closing finger joint @p k (index into
-    /// finger_joints): it waits for its parent link's joint, stops at first
-    /// touch with its target @p grip beyond, or moves its target on.
-    void close_joint(const std::size_t    k,
+    /// One time step of closing drive @p k: it waits for the drive of its
+    /// parent link's joint, stops at first touch with its target 'Grip'
+    /// beyond, or moves its target on.
+    void close_drive(const std::size_t    k,
                      std::vector<bool>   &touched,
                      std::vector<double> &targets);
+    /// Whether drive @p k touches the object (HandDrive::subtree_touch).
+    bool drive_touches(const std::size_t k) const;
+    /// Whether drive @p k, moved the other way from the start of the
+    /// closing (in a copy of it), brings a link onto the object within its
+    /// ctrlrange and 'Maximum time': tells a wrong sign from a short reach.
+    /// @p reach: drive_reach() where that stops.
+    bool other_sign_touches(const std::size_t k, double &reach) const;
+    /// The closest distance (m) from a geom centre below a joint of drive
+    /// @p k to the object's centre, in @p d.
+    double drive_reach(const std::size_t k, const mjData *d) const;
+    /// The InputError for drive @p k that ran out of @p what (its
+    /// ctrlrange, or time) without touching.
+    [[noreturn]] void never_touched(const std::size_t  k,
+                                    const std::string &what) const;
+    /// Drive @p k in messages: its joint, or its actuator with its sign.
+    std::string drive_label(const std::size_t k) const;
     /// Hold the targets until the grasp settles (recording as it goes); an
     /// InputError naming what moves or misses contact if it never does.
     void hold_until_settled();
@@ -76,13 +98,23 @@ namespace softgrasp
     void pull();
     /// Step until at rest with settled forces, at most @p max_time (s).
     bool settle(const double max_time, const bool require_links);
-    bool touches_object(const int body) const;
+    /// Whether a geom of body @p body (or, with @p subtree, of a body
+    /// below it) touches the object.
+    /// In @p d, or the simulation's data if null.
+    bool touches_object(const int     body,
+                        const bool    subtree = false,
+                        const mjData *d       = nullptr) const;
     /// The joint of the fastest degree of freedom (for messages).
     std::string              fastest_joint() const;
     std::vector<std::string> missing_links() const;
     void                     set_target(const int joint, const double value);
-    /// The share of a closure that finger joint @p k takes (Joint weights).
-    double weight(const std::size_t k) const;
+    /// Set actuator @p a's target, refusing one outside its ctrlrange.
+    void set_control(const int a, const double value);
+    /// Every drive's target at @p closure beyond the equilibrium targets.
+    void apply_closure(const double closure);
+    /// fk_data = the equilibrium pose with the drives closed by @p closure
+    /// and the base slid to @p slide (see the class comment).
+    void closed_pose(const double closure, const double slide);
     /// Append a sample: poses from @p pose_data, forces from the simulation.
     void record(const double time, const mjData *pose_data);
     /// The grip link's normal force (N) after settle_time at closure c
@@ -105,25 +137,30 @@ namespace softgrasp
     /// The pull of one level, from the state grip_force_at() left.
     void pull_at_level(const GripLevelSettings &settings,
                        RigidGripLevel          &level);
-    /// Forward kinematics of the equilibrium with joint angles changed.
-    void forward_kinematics(const std::vector<double> &finger_angles,
-                            const double               slide);
 
-    const GraspParameters parameters;
-    std::ostream         &log;
-    MujocoModel           mujoco;
-    mjData               *fk_data          = nullptr;
-    mjData               *equilibrium_data = nullptr; ///< state at equilibrium
-    int                   object_body, base_body, slide_joint = -1;
-    std::vector<int>      finger_joints, finger_actuators, link_geoms;
-    /// The finger joints' unit: "rad" (hinges) or "m" (slide joints).
+    const GraspParameters  parameters;
+    std::ostream          &log;
+    MujocoModel            mujoco;
+    mjData                *fk_data          = nullptr;
+    mjData                *equilibrium_data = nullptr; ///< state at equilibrium
+    mjData                *closing_start    = nullptr; ///< before closing
+    int                    object_body, base_body, slide_joint = -1;
+    std::vector<HandDrive> drives;
+    std::vector<int>       link_geoms;
+    /// The drives' joints' unit: "rad" (hinges) or "m" (slide joints).
     std::string joint_unit = "rad";
-    /// The joints in the file (fingers, then the slide joint) and their
-    /// actuators.
+    /// The joints in the file (the drives', then the slide joint) and
+    /// their actuators.
     std::vector<int>    recorded_joints, recorded_actuators;
     std::vector<int>    required_links;
     std::vector<int>    hand_bodies;
     std::vector<double> equilibrium_qpos, equilibrium_targets;
+    /// Coupled drives: the contacts' generalized force at the equilibrium,
+    /// and the loaded hand at the equilibrium targets (qpos).
+    std::vector<double> equilibrium_load, free_baseline;
+    /// The loaded hand's qpos at closure free_closure (pulls reuse it).
+    std::vector<double> free_qpos;
+    double              free_closure = -1;
     KinematicsData      data;
   };
 } // namespace softgrasp

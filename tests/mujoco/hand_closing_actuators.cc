@@ -1,0 +1,162 @@
+// Hands closed by naming their actuators (issue 54), from the MJCF alone:
+//  - the parallel-jaw gripper rewritten as real ones are built: ONE servo
+//    on the left jaw, the right jaw following it through an <equality
+//    joint=...>. 'Closing actuators = left_jaw_servo' finds both joints
+//    (reported), both pads touch and balance (1 %), and the indentation's
+//    1 mm closure moves both pads 1 mm (the coupled jaw through the
+//    loaded hand, 1e-5 m);
+//  - the errors a new user meets, each naming the MJCF element and the
+//    fix: an unknown actuator (valid ones listed), an actuator that is not
+//    a position servo (a <motor>), both 'Finger joints' and 'Closing
+//    actuators' given, a closing sign that opens the gripper (the other
+//    sign proposed), and a hand too far from the object to touch.
+#include "../tests.h"
+#include "grasp_helpers.h"
+
+#include <fstream>
+#include <softgrasp/base/input_error.h>
+#include <softgrasp/io/kinematics_file.h>
+#include <softgrasp/mujoco/grasp_simulation.h>
+
+using namespace softgrasp;
+
+namespace
+{
+  /// The text of parameter-files/mjcf/@p name.
+  std::string shipped(const std::string &name)
+  {
+    std::ifstream      in(std::string(PARAMETER_FILES) + "/mjcf/" + name);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  /// @p text with @p from replaced by @p to (which must be there).
+  std::string
+  edited(std::string text, const std::string &from, const std::string &to)
+  {
+    const auto at = text.find(from);
+    AssertThrow(at != std::string::npos, dealii::ExcMessage(from));
+    return text.replace(at, from.size(), to);
+  }
+
+  /// Run the rigid stage of @p p; its kinematics data.
+  KinematicsData run(const GraspParameters &p, std::ostream &log)
+  {
+    GraspSimulation simulation(p, log);
+    return simulation.run();
+  }
+} // namespace
+
+int
+main()
+{
+  softgrasp_tests::initlog();
+  dealii::ParameterHandler prm;
+  softgrasp_tests::read_sphere_squeeze(prm);
+  const auto         base = softgrasp_tests::sphere_grasp_parameters(prm);
+  std::ostringstream log;
+
+  // The jaw gripper on one servo: the right jaw follows by an equality.
+  std::ofstream("one_servo_gripper.xml") << edited(
+      edited(shipped("parallel_jaw_gripper.xml"),
+             "<position name=\"right_jaw_servo\" class=\"jaw\" "
+             "joint=\"right_jaw_joint\"/>",
+             ""),
+      "<actuator>",
+      "<equality><joint joint1=\"right_jaw_joint\" joint2=\"left_jaw_joint\" "
+      "solref=\"0.004 1\"/></equality>\n  <actuator>");
+  std::ofstream("one_servo_scene.xml")
+      << edited(shipped("gripper_sphere_scene.xml"),
+                "parallel_jaw_gripper.xml",
+                "one_servo_gripper.xml");
+  auto jaw                           = base;
+  jaw.scene_file                     = "one_servo_scene.xml";
+  jaw.finger_joints                  = {};
+  jaw.closing_actuators              = {"left_jaw_servo"};
+  jaw.contact_links                  = {"left_pad", "right_pad"};
+  jaw.closing_speed                  = 0.05;
+  jaw.grip                           = 0.002;
+  jaw.indentation.extra_angle        = 0.001;
+  jaw.indentation.samples            = 4;
+  const KinematicsData data          = run(jaw, log);
+  const auto           reported_hand = log.str().find(
+      "actuator 'left_jaw_servo' (joints left_jaw_joint right_jaw_joint)");
+  SG_CHECK(reported_hand != std::string::npos, "the hand reported");
+  dealii::deallog << "reported: actuator 'left_jaw_servo' moves both jaws: 1"
+                  << std::endl;
+  const auto balance = softgrasp_tests::equilibrium_balance(data);
+  SG_CHECK(balance.links == 2 && balance.smallest > 1,
+           "both pads pressed by more than 1 N");
+  SG_CHECK(balance.sum < 0.01 * balance.largest, "the pads' forces balance");
+  dealii::deallog << "both pads touch with more than 1 N, balanced within "
+                     "1 %: 1"
+                  << std::endl;
+  unsigned int pads  = 0;
+  const double error = softgrasp_tests::indentation_travel_error(
+      data, {"left_pad", "right_pad"}, 0.001, pads);
+  SG_CHECK(pads == 2 && error < 1e-5, "both pads close 1 mm");
+  dealii::deallog << "indentation of 1 mm: the servo's jaw and the coupled "
+                     "jaw both move 1 mm (1e-5 m): 1"
+                  << std::endl;
+
+  // The underactuated gripper and its bad variants.
+  auto ua              = base;
+  ua.scene_file        = PARAMETER_FILES "/mjcf/underactuated_sphere_scene.xml";
+  ua.base_position     = {0, 0, 0.05};
+  ua.finger_joints     = {};
+  ua.closing_actuators = {"grip"};
+  ua.contact_links     = {};
+  ua.closing_speed     = 1;
+  ua.grip              = 0.1;
+  ua.indentation.extra_angle = 0.1;
+  ua.indentation.samples     = 2;
+
+  auto unknown              = ua;
+  unknown.closing_actuators = {"gripper_motor"};
+  softgrasp_tests::expect_input_error(
+      "unknown actuator",
+      [&] { GraspSimulation simulation(unknown, log); },
+      {"no actuator 'gripper_motor'", "grip, pull_servo"});
+
+  std::ofstream("motor_gripper.xml")
+      << edited(shipped("underactuated_gripper.xml"),
+                "<position name=\"grip\" tendon=\"grip_tendon\" kp=\"2\"",
+                "<motor name=\"grip\" tendon=\"grip_tendon\"");
+  std::ofstream("motor_scene.xml")
+      << edited(shipped("underactuated_sphere_scene.xml"),
+                "underactuated_gripper.xml",
+                "motor_gripper.xml");
+  auto motor       = ua;
+  motor.scene_file = "motor_scene.xml";
+  softgrasp_tests::expect_input_error(
+      "an actuator that is not a position servo",
+      [&] { GraspSimulation simulation(motor, log); },
+      {"Actuator 'grip'", "not a position servo", "<position>"});
+
+  auto both          = ua;
+  both.finger_joints = {"left_proximal_joint"};
+  softgrasp_tests::expect_input_error(
+      "finger joints and closing actuators both given",
+      [&] { GraspSimulation simulation(both, log); },
+      {"both given", "set Finger joints ="});
+
+  auto opens              = ua;
+  opens.closing_actuators = {"-grip"};
+  softgrasp_tests::expect_input_error(
+      "a closing sign that opens the gripper",
+      [&] { run(opens, log); },
+      {"actuator '-grip'",
+       "the opposite target brings its links onto it",
+       "the closing sign opens the hand",
+       "write 'grip'"});
+
+  auto far             = ua;
+  far.base_position[2] = 0.3;
+  softgrasp_tests::expect_input_error("a hand too far from the object",
+                                      [&] { run(far, log); },
+                                      {"actuator 'grip'",
+                                       "neither does the opposite target",
+                                       "the hand cannot reach the object",
+                                       "'Rigid environment/Base position'"});
+}
