@@ -64,16 +64,18 @@ namespace softgrasp_tests
     set(prm, {"Mesh", "Layered limb"}, "Fascia thickness", "0");
   }
 
-  /// The shipped arm_grasp.prm on a coarse limb (16 cells around, no
-  /// fascia: its thin cells set the explicit step), without pictures, a
-  /// target force or VTU output, writing into @p directory.
+  /// The shipped arm_grasp.prm (or @p file of parameter-files/) on a
+  /// coarse limb (16 cells around, no fascia: its thin cells set the
+  /// explicit step), without pictures, a target force or VTU output,
+  /// writing into @p directory.
   inline void read_coarse_arm(dealii::ParameterHandler &prm,
-                              const std::string        &directory)
+                              const std::string        &directory,
+                              const std::string        &file = "arm_grasp.prm")
   {
     softgrasp::GraspParameters::declare_parameters(prm);
     softgrasp::ArmGraspStudy::declare_parameters(prm);
     softgrasp::SolverProgram::read_parameters<3>(
-        prm, PARAMETER_FILES "/arm_grasp.prm");
+        prm, std::string(PARAMETER_FILES) + "/" + file);
     set_coarse_limb(prm);
     set(prm, {"Indentation study"}, "Pictures", "false");
     set(prm, {"Indentation study"}, "Target normal force", "0");
