@@ -4,12 +4,15 @@
 //    joint=...>. 'Closing actuators = left_jaw_servo' finds both joints
 //    (reported), both pads touch and balance (1 %), and the indentation's
 //    1 mm closure moves both pads 1 mm (the coupled jaw through the
-//    loaded hand, 1e-5 m);
+//    loaded hand, 1e-5 m); with both jaws' servos geared 2:1 the same
+//    closure (in actuator length) moves each jaw 0.5 mm;
 //  - the errors a new user meets, each naming the MJCF element and the
 //    fix: an unknown actuator (valid ones listed), an actuator that is not
 //    a position servo (a <motor>), both 'Finger joints' and 'Closing
 //    actuators' given, a closing sign that opens the gripper (the other
-//    sign proposed), and a hand too far from the object to touch.
+//    sign proposed), a hand too far from the object to touch, a pad mesh
+//    file MuJoCo cannot read, and a pad mesh that is not closed (found
+//    before the rigid stage runs).
 #include "../tests.h"
 #include "grasp_helpers.h"
 
@@ -100,6 +103,37 @@ main()
                      "jaw both move 1 mm (1e-5 m): 1"
                   << std::endl;
 
+  // Both servos with gear 2: an actuator's length is twice its jaw's
+  // travel, so the 1 mm closure of the actuators moves each jaw 0.5 mm.
+  std::string geared_text = shipped("parallel_jaw_gripper.xml");
+  for (const std::string side : {"left", "right"})
+    geared_text = edited(geared_text,
+                         "<position name=\"" + side +
+                             "_jaw_servo\" class=\"jaw\" joint=\"" + side +
+                             "_jaw_joint\"/>",
+                         "<position name=\"" + side +
+                             "_jaw_servo\" class=\"jaw\" joint=\"" + side +
+                             "_jaw_joint\" gear=\"2\" ctrlrange=\"-0.01 "
+                             "0.12\"/>");
+  std::ofstream("geared_gripper.xml") << geared_text;
+  std::ofstream("geared_scene.xml")
+      << edited(shipped("gripper_sphere_scene.xml"),
+                "parallel_jaw_gripper.xml",
+                "geared_gripper.xml");
+  auto geared               = jaw;
+  geared.scene_file         = "geared_scene.xml";
+  geared.closing_actuators  = {"left_jaw_servo", "right_jaw_servo"};
+  geared.closing_speed      = 0.1;
+  geared.grip               = 0.004;
+  const auto   geared_data  = run(geared, log);
+  const double geared_error = softgrasp_tests::indentation_travel_error(
+      geared_data, {"left_pad", "right_pad"}, 0.0005, pads);
+  SG_CHECK(pads == 2 && geared_error < 1e-5,
+           "the geared jaws move half the closure");
+  dealii::deallog << "gear 2: the 1 mm closure of the actuators moves each "
+                     "jaw 0.5 mm (1e-5 m): 1"
+                  << std::endl;
+
   // The underactuated gripper and its bad variants.
   auto ua              = base;
   ua.scene_file        = PARAMETER_FILES "/mjcf/underactuated_sphere_scene.xml";
@@ -159,4 +193,38 @@ main()
                                        "neither does the opposite target",
                                        "the hand cannot reach the object",
                                        "'Rigid environment/Base position'"});
+
+  // The jaw gripper with a pad MuJoCo cannot load, and with an open pad.
+  const std::string pad_mesh =
+      "          face=\"0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4\n"
+      "                1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7\"/>";
+  {
+    std::string text  = shipped("parallel_jaw_gripper.xml");
+    const auto  start = text.find("<mesh name=\"pad\"");
+    const auto  end   = text.find("/>", start) + 2;
+    std::ofstream("missing_pad.xml") << text.replace(
+        start, end - start, "<mesh name=\"pad\" file=\"no_such_pad.stl\"/>");
+  }
+  std::ofstream("open_pad.xml")
+      << edited(shipped("parallel_jaw_gripper.xml"),
+                pad_mesh,
+                "          face=\"0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4\n"
+                "                1 2 6  1 6 5  2 3 7  2 7 6  3 0 4\"/>");
+  for (const std::string name : {"missing_pad", "open_pad"})
+    std::ofstream(name + "_scene.xml")
+        << edited(shipped("gripper_sphere_scene.xml"),
+                  "parallel_jaw_gripper.xml",
+                  name + ".xml");
+  auto missing       = jaw;
+  missing.scene_file = "missing_pad_scene.xml";
+  softgrasp_tests::expect_input_error(
+      "a pad mesh file MuJoCo cannot read",
+      [&] { GraspSimulation simulation(missing, log); },
+      {"MuJoCo could not load", "no_such_pad.stl"});
+  auto open       = jaw;
+  open.scene_file = "open_pad_scene.xml";
+  softgrasp_tests::expect_input_error(
+      "an open pad mesh",
+      [&] { GraspSimulation simulation(open, log); },
+      {"hand geom 'left_pad'", "is not closed", "close the holes"});
 }

@@ -3,6 +3,7 @@
 #include <iomanip>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/mujoco/grasp_simulation.h>
+#include <softgrasp/rigid/triangle_mesh_shape.h>
 
 namespace softgrasp
 {
@@ -111,6 +112,18 @@ namespace softgrasp
               "Hand geom '" + std::string(mj_id2name(m, mjOBJ_GEOM, g)) +
               "' is a height field, which the kinematics file cannot "
               "carry. Fix: model the link with a mesh or primitive geoms.");
+        if (m->geom_type[g] == mjGEOM_MESH)
+        { // the finite element link needs a closed, oriented surface: say
+          // so now, not after the rigid stage
+          KinematicsData::Geom mesh;
+          add_mesh_surface(m, g, mesh);
+          const TriangleMeshShape check(
+              mesh.vertices,
+              mesh.triangles,
+              "mesh of the hand geom '" +
+                  std::string(mj_id2name(m, mjOBJ_GEOM, g)) + "' (scene '" +
+                  mujoco.file + "', as MuJoCo compiled it)");
+        }
         link_geoms.push_back(g);
       }
     fk_data = mujoco.make_data();
