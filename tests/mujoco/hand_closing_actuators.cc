@@ -6,9 +6,11 @@
 //    1 mm closure moves both pads 1 mm (the coupled jaw through the
 //    loaded hand, 1e-5 m); with both jaws' servos geared 2:1 the same
 //    closure (in actuator length) moves each jaw 0.5 mm;
+//  - the underactuated gripper closed by naming a <keyframe> of the closed
+//    hand instead of its actuator: the keyframe's ctrl names 'grip';
 //  - the errors a new user meets, each naming the MJCF element and the
-//    fix: an unknown actuator (valid ones listed), an actuator that is not
-//    a position servo (a <motor>), both 'Finger joints' and 'Closing
+//    fix: an unknown keyframe or actuator (valid ones listed), an actuator that
+//    is not a position servo (a <motor>), both 'Finger joints' and 'Closing
 //    actuators' given, a closing sign that opens the gripper (the other
 //    sign proposed), a hand too far from the object to touch, a pad mesh
 //    file MuJoCo cannot read, and a pad mesh that is not closed (found
@@ -145,6 +147,36 @@ main()
   ua.grip              = 0.1;
   ua.indentation.extra_angle = 0.1;
   ua.indentation.samples     = 2;
+
+  // The same gripper closed by a keyframe of the closed hand: its ctrl
+  // raises 'grip' (the pull servo stays), so 'grip' closes it.
+  std::ofstream("keyed_gripper.xml")
+      << edited(shipped("underactuated_gripper.xml"),
+                "<actuator>",
+                "<keyframe><key name=\"closed\" ctrl=\"2.5 0\"/></keyframe>\n"
+                "  <actuator>");
+  std::ofstream("keyed_scene.xml")
+      << edited(shipped("underactuated_sphere_scene.xml"),
+                "underactuated_gripper.xml",
+                "keyed_gripper.xml");
+  auto keyed              = ua;
+  keyed.scene_file        = "keyed_scene.xml";
+  keyed.closing_actuators = {};
+  keyed.closing_keyframe  = "closed";
+  const auto keyed_data   = run(keyed, log);
+  SG_CHECK(log.str().find("keyframe 'closed' closes the hand by grip\n") !=
+                   std::string::npos &&
+               softgrasp_tests::equilibrium_balance(keyed_data).links == 3,
+           "the keyframe names the actuator");
+  dealii::deallog << "keyframe 'closed': the hand closes by 'grip' and holds "
+                     "the sphere: 1"
+                  << std::endl;
+  auto no_key             = keyed;
+  no_key.closing_keyframe = "open";
+  softgrasp_tests::expect_input_error(
+      "an unknown keyframe",
+      [&] { GraspSimulation simulation(no_key, log); },
+      {"no keyframe 'open'", "closed"});
 
   auto unknown              = ua;
   unknown.closing_actuators = {"gripper_motor"};

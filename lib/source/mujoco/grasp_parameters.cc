@@ -59,6 +59,16 @@ namespace softgrasp
           "actuator's length (gear x joint coordinate, or tendon length). "
           "Empty: 'Finger joints' closes the hand.");
       prm.declare_entry(
+          "Closing keyframe",
+          "",
+          Patterns::Anything(),
+          "Name of a <keyframe> of the scene whose ctrl holds the closed "
+          "hand's targets: every position servo (but the pull's) whose "
+          "target there differs from its length at rest closes the hand, in "
+          "the direction of that difference, as if named in 'Closing "
+          "actuators'. Only the direction is used: each target ramps until "
+          "touch as for 'Closing actuators'. Empty: not used.");
+      prm.declare_entry(
           "Contact links",
           "thumb_proximal_link, thumb_distal_link, finger1_proximal_link, "
           "finger1_distal_link, finger2_proximal_link, finger2_distal_link",
@@ -196,6 +206,7 @@ namespace softgrasp
     base_orientation   = raw.normalized();
     finger_joints      = names(prm.get("Finger joints"));
     closing_actuators  = names(prm.get("Closing actuators"));
+    closing_keyframe   = prm.get("Closing keyframe");
     contact_links      = names(prm.get("Contact links"));
     closing_speed      = section.get_positive("Closing speed", "rad/s");
     grip               = section.get_positive("Grip", "rad", true);
@@ -216,7 +227,8 @@ namespace softgrasp
       const std::size_t drives = closing_actuators.empty()
                                      ? finger_joints.size()
                                      : closing_actuators.size();
-      if (!indentation.joint_weights.empty() &&
+      // (a keyframe's drives are known once the scene is loaded)
+      if (!indentation.joint_weights.empty() && closing_keyframe.empty() &&
           indentation.joint_weights.size() != drives)
         throw InputError(
             "'Rigid environment/Indentation/Joint weights' has " +

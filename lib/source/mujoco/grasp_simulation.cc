@@ -57,9 +57,27 @@ namespace softgrasp
     const mjModel *m = mujoco.model();
     object_body      = mujoco.id(mjOBJ_BODY, parameters.object_body, "body");
     base_body        = mujoco.id(mjOBJ_BODY, parameters.base_body, "body");
-    drives           = hand_drives(mujoco,
+    auto closing     = parameters.closing_actuators;
+    if (!parameters.closing_keyframe.empty())
+    {
+      if (!closing.empty())
+        throw InputError("'Rigid environment/Closing keyframe' and 'Closing "
+                         "actuators' are both given. Fix: leave one empty.");
+      const int pull =
+          mj_name2id(m, mjOBJ_JOINT, parameters.pull.slide_joint.c_str());
+      closing = keyframe_closing_actuators(
+          mujoco,
+          parameters.closing_keyframe,
+          {pull >= 0 ? mujoco.actuator_of_joint(pull) : -1});
+      log << "MuJoCo: keyframe '" << parameters.closing_keyframe
+          << "' closes the hand by";
+      for (const auto &name : closing)
+        log << ' ' << name;
+      log << '\n';
+    }
+    drives = hand_drives(mujoco,
                          parameters.finger_joints,
-                         parameters.closing_actuators,
+                         closing,
                          parameters.indentation.joint_weights,
                          joint_unit);
     for (const auto &name : parameters.contact_links)

@@ -263,6 +263,35 @@ namespace softgrasp
     return qpos;
   }
 
+  std::vector<std::string>
+  keyframe_closing_actuators(const MujocoModel      &model,
+                             const std::string      &key,
+                             const std::vector<int> &exclude)
+  {
+    const mjModel           *m = model.model();
+    const int                k = model.id(mjOBJ_KEY, key, "keyframe");
+    std::vector<std::string> result;
+    for (int a = 0; a < m->nu; ++a)
+    {
+      if (std::find(exclude.begin(), exclude.end(), a) != exclude.end() ||
+          !is_position_servo(m, a))
+        continue;
+      const double change = m->key_ctrl[k * m->nu + a] - m->actuator_length0[a];
+      if (std::abs(change) > 1e-12 * (1 + std::abs(m->actuator_length0[a])))
+        result.push_back((change < 0 ? "-" : "") +
+                         name_of(m, mjOBJ_ACTUATOR, a));
+    }
+    if (result.empty())
+      throw InputError("The keyframe '" + key + "' of the scene '" +
+                       model.file +
+                       "' gives every position servo of the hand the target "
+                       "it has at rest (qpos0), so it says nothing about how "
+                       "the hand closes. Fix: give the closed hand's targets "
+                       "in its ctrl, or name the actuators in 'Rigid "
+                       "environment/Closing actuators'.");
+    return result;
+  }
+
   double actuator_length(const mjModel *m, const mjtNum *qpos, const int a)
   {
     const int    target = m->actuator_trnid[2 * a];

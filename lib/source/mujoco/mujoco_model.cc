@@ -68,6 +68,9 @@ namespace softgrasp
     case mjOBJ_ACTUATOR:
       n = m->nu;
       break;
+    case mjOBJ_KEY:
+      n = m->nkey;
+      break;
     default:
       break;
     }

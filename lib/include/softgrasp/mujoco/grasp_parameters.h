@@ -29,6 +29,9 @@ namespace softgrasp
     /// Position actuators that close the hand ("-name": closes as its
     /// target decreases); if given, 'finger_joints' must be empty.
     std::vector<std::string> closing_actuators;
+    /// A <keyframe> of the scene whose ctrl is the closed hand: its
+    /// actuators (and their signs) close the hand; empty: not used.
+    std::string              closing_keyframe;
     std::vector<std::string> contact_links; ///< geoms touching at equilibrium
     double                   closing_speed = 0.5; ///< rad/s (m/s: slide joints)
     double                   grip = 0.1; ///< rad (m) beyond first touch

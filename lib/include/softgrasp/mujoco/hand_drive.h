@@ -94,6 +94,19 @@ namespace softgrasp
    */
   double actuator_length(const mjModel *m, const mjtNum *qpos, const int a);
 
+  /**
+   * The closing actuators that the keyframe @p key of @p model commands:
+   * every position servo but those in @p exclude (the base's pull) whose
+   * target in the keyframe differs from its length at qpos0, as "name"
+   * where the keyframe's target is larger and "-name" where it is smaller
+   * (the closing sign). InputErrors: an unknown keyframe (the valid ones
+   * listed), a keyframe that moves no actuator.
+   */
+  std::vector<std::string>
+  keyframe_closing_actuators(const MujocoModel      &model,
+                             const std::string      &key,
+                             const std::vector<int> &exclude);
+
   /// Name of actuator @p a with its closing sign ("-grip" or "grip").
   std::string drive_name(const mjModel *m, const HandDrive &drive);
 } // namespace softgrasp
