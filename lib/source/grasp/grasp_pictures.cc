@@ -90,13 +90,35 @@ namespace softgrasp
       return e_top;
     }
 
-    /// Every geom's wire frame at its pose at @p time (mm).
-    void write_geoms(const KinematicsData &kinematics,
-                     const double          time,
-                     const std::string    &file)
+    /// The triangles of the mesh geom named @p name in @p kinematics (none
+    /// if it is not a mesh).
+    const KinematicsData::Geom *mesh_geom(const KinematicsData &kinematics,
+                                          const std::string    &name)
     {
-      std::ostringstream out;
+      for (const auto &body : kinematics.bodies)
+        for (const auto &geom : body.geoms)
+          if (geom.name == name && !geom.triangles.empty())
+            return &geom;
+      return nullptr;
+    }
+
+    /**
+     * Every geom's wire frame at its pose at @p time (mm) into @p file, and
+     * the triangles of the mesh geoms, one polygon block each, into
+     * @p faces_file (gnuplot 'with polygons' draws them as surfaces);
+     * returns whether there were any.
+     */
+    bool write_geoms(const KinematicsData &kinematics,
+                     const double          time,
+                     const std::string    &file,
+                     const std::string    &faces_file)
+    {
+      std::ostringstream out, faces;
       out << "# link geoms at t = " << time << " s: x y z (mm)\n";
+      faces << "# mesh link triangles at t = " << time << " s: x y z (mm)\n";
+      bool       any_faces = false;
+      const auto write     = [](std::ostream &o, const Eigen::Vector3d &x)
+      { o << 1e3 * x[0] << ' ' << 1e3 * x[1] << ' ' << 1e3 * x[2] << '\n'; };
       const RigidBodySet bodies = rigid_bodies_from(kinematics);
       for (const auto &body : bodies.bodies())
         for (unsigned int g = 0; g < body.geoms().size(); ++g)
@@ -105,15 +127,21 @@ namespace softgrasp
           for (const auto &line : body.geoms()[g].shape->wireframe())
           {
             for (const auto &local : line)
-            {
-              const Eigen::Vector3d x = pose.to_world(local);
-              out << 1e3 * x[0] << ' ' << 1e3 * x[1] << ' ' << 1e3 * x[2]
-                  << '\n';
-            }
+              write(out, pose.to_world(local));
             out << "\n\n";
           }
+          if (const auto *mesh = mesh_geom(kinematics, body.geoms()[g].name))
+            for (const auto &t : mesh->triangles)
+            {
+              for (const unsigned int v : t)
+                write(faces, pose.to_world(mesh->vertices[v]));
+              faces << '\n';
+              any_faces = true;
+            }
         }
       AtomicFile::write(file, out.str());
+      AtomicFile::write(faces_file, faces.str());
+      return any_faces;
     }
   } // namespace
 
@@ -130,7 +158,10 @@ namespace softgrasp
       return;
     const double e_top =
         write_surface(all, directory + "/" + base + "_surface.dat");
-    write_geoms(kinematics, time, directory + "/" + base + "_geoms.dat");
+    const bool faces = write_geoms(kinematics,
+                                   time,
+                                   directory + "/" + base + "_geoms.dat",
+                                   directory + "/" + base + "_mesh_links.dat");
     {
       AtomicFile::TextFile gp(directory + "/" + base + "_picture.gnuplot");
       gp << "set terminal pngcairo size 1100,900 noenhanced\n"
@@ -146,7 +177,12 @@ namespace softgrasp
          << "]\n"
          << "splot '" << base
          << "_surface.dat' using 1:2:3:4 with pm3d notitle, '" << base
-         << "_geoms.dat' using 1:2:3 with lines lc rgb '#202020' notitle\n";
+         << "_geoms.dat' using 1:2:3 with lines lc rgb '#202020' notitle";
+      if (faces) // mesh links as grey surfaces
+        gp << ", '" << base
+           << "_mesh_links.dat' using 1:2:3 with polygons fs solid 1.0 "
+              "fc rgb '#9a9aa6' notitle";
+      gp << '\n';
       gp.commit();
     }
     if (run_gnuplot(
@@ -165,6 +201,7 @@ namespace softgrasp
 
   void write_force_plot(const std::string              &csv_name,
                         const std::vector<std::string> &links,
+                        const std::string              &closure_unit,
                         const std::string              &directory,
                         const std::string              &base,
                         std::ostream                   &log)
@@ -179,7 +216,8 @@ namespace softgrasp
             "closure: finite elements (solid, points) and MuJoCo (dashed)'\n";
       for (const std::string part : {"normal", "lateral"})
       {
-        gp << "set xlabel 'closure beyond the equilibrium (rad)'\n"
+        gp << "set xlabel 'closure beyond the equilibrium (" << closure_unit
+           << ")'\n"
            << "set ylabel '" << part << " force (N)'\nplot ";
         for (std::size_t l = 0; l < links.size(); ++l)
           gp << (l ? ", " : "") << "'" << csv_name

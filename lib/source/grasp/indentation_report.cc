@@ -180,6 +180,7 @@ namespace softgrasp
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         write_force_plot(output.base_name + "_links.csv",
                          result.links,
+                         closure_unit,
                          output.directory,
                          output.base_name,
                          std::cout);

@@ -289,8 +289,8 @@ namespace softgrasp
       pull_at_level(settings, level);
       log << "  level " << std::setw(2) << levels.size() + 1 << ": "
           << std::setw(7) << level.reached_force << " N (target " << target
-          << " N) at closure " << std::setw(8) << level.closure << " rad, "
-          << level.trials << " trials"
+          << " N) at closure " << std::setw(8) << level.closure << " "
+          << joint_unit << ", " << level.trials << " trials"
           << (level.matched ? "" : " (not reached: 'Maximum closure')") << '\n';
       levels.push_back(std::move(level));
     }

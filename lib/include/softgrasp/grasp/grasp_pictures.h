@@ -12,9 +12,10 @@ namespace softgrasp
   /**
    * PNG picture (gnuplot) of the deformed surface of @p system coloured by
    * the largest principal Green-Lagrange strain e_max, with the geoms of
-   * @p kinematics at time @p time drawn as wire frames: writes
-   * <base>_surface.dat, <base>_geoms.dat, <base>_picture.gnuplot and
-   * <base>_picture.png in @p directory. Faces on boundary ids in
+   * @p kinematics at time @p time drawn as wire frames (mesh geoms also
+   * as grey surfaces): writes <base>_surface.dat, <base>_geoms.dat,
+   * <base>_mesh_links.dat, <base>_picture.gnuplot and <base>_picture.png
+   * in @p directory. Faces on boundary ids in
    * @p hidden_boundaries (e.g. a rigid core) are left out. Collective; the
    * files are written on rank 0. Lengths drawn in mm.
    */
@@ -31,10 +32,12 @@ namespace softgrasp
    * @p csv_name of IndentationStudy (in @p directory): the finite element
    * normal and
    * lateral force as lines, the rigid simulator's as dashed lines of the
-   * same colour. Writes <base>_forces.gnuplot and <base>_forces.png.
+   * same colour, against the closure in @p closure_unit ("rad", "m").
+   * Writes <base>_forces.gnuplot and <base>_forces.png.
    */
   void write_force_plot(const std::string              &csv_name,
                         const std::vector<std::string> &links,
+                        const std::string              &closure_unit,
                         const std::string              &directory,
                         const std::string              &base,
                         std::ostream                   &log);
