@@ -70,8 +70,7 @@ namespace softgrasp
           "touch as for 'Closing actuators'. Empty: not used.");
       prm.declare_entry(
           "Contact links",
-          "thumb_proximal_link, thumb_distal_link, finger1_proximal_link, "
-          "finger1_distal_link, finger2_proximal_link, finger2_distal_link",
+          "",
           Patterns::List(Patterns::Anything(), 0),
           "Geoms that must touch the object at the equilibrium grasp; "
           "empty: none is required, and the run reports every geom of the "
