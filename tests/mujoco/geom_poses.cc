@@ -112,14 +112,5 @@ main()
 
   dealii::deallog << "underactuated gripper (one servo on a tendon):"
                   << std::endl;
-  auto ua              = parameters;
-  ua.scene_file        = PARAMETER_FILES "/mjcf/underactuated_sphere_scene.xml";
-  ua.base_position     = {0, 0, 0.05};
-  ua.finger_joints     = {};
-  ua.closing_actuators = {"grip"};
-  ua.contact_links     = {"left_distal_link", "right_distal_link"};
-  ua.closing_speed     = 1;
-  ua.grip              = 0.1;
-  ua.indentation.extra_angle = 0.1;
-  compare(ua, 5);
+  compare(softgrasp_tests::underactuated_sphere_grasp(parameters), 5);
 }

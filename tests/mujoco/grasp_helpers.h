@@ -156,6 +156,23 @@ namespace softgrasp_tests
     return diff / largest;
   }
 
+  /// @p p (the sphere scene's grasp) with the underactuated gripper around
+  /// the sphere instead, as underactuated_squeeze.prm sets it up: closed
+  /// by its one actuator 'grip', 0.1 rad of grip and of indentation.
+  inline softgrasp::GraspParameters
+  underactuated_sphere_grasp(softgrasp::GraspParameters p)
+  {
+    p.scene_file    = PARAMETER_FILES "/mjcf/underactuated_sphere_scene.xml";
+    p.base_position = {0, 0, 0.05};
+    p.finger_joints = {};
+    p.closing_actuators       = {"grip"};
+    p.contact_links           = {"left_distal_link", "right_distal_link"};
+    p.closing_speed           = 1;
+    p.grip                    = 0.1;
+    p.indentation.extra_angle = 0.1;
+    return p;
+  }
+
   /// Log whether @p f throws an InputError whose message has a fix and
   /// every one of @p needles (printing it if not), and check that it does.
   template <typename F>

@@ -45,6 +45,25 @@ namespace
     return text.replace(at, from.size(), to);
   }
 
+  /**
+   * Write @p hand_text as <name>.xml and the shipped scene of the shipped
+   * hand @p hand including it as <name>_scene.xml (the parallel-jaw
+   * gripper's gripper_sphere_scene.xml or the underactuated gripper's
+   * underactuated_sphere_scene.xml); returns the scene's file name.
+   */
+  std::string variant(const std::string &name,
+                      const std::string &hand_text,
+                      const std::string &hand)
+  {
+    const std::string scene = hand == "parallel_jaw_gripper.xml"
+                                  ? "gripper_sphere_scene.xml"
+                                  : "underactuated_sphere_scene.xml";
+    std::ofstream(name + ".xml") << hand_text;
+    std::ofstream(name + "_scene.xml")
+        << edited(shipped(scene), hand, name + ".xml");
+    return name + "_scene.xml";
+  }
+
   /// Run the rigid stage of @p p; its kinematics data.
   KinematicsData run(const GraspParameters &p, std::ostream &log)
   {
@@ -63,20 +82,19 @@ main()
   std::ostringstream log;
 
   // The jaw gripper on one servo: the right jaw follows by an equality.
-  std::ofstream("one_servo_gripper.xml") << edited(
-      edited(shipped("parallel_jaw_gripper.xml"),
-             "<position name=\"right_jaw_servo\" class=\"jaw\" "
-             "joint=\"right_jaw_joint\"/>",
-             ""),
-      "<actuator>",
-      "<equality><joint joint1=\"right_jaw_joint\" joint2=\"left_jaw_joint\" "
-      "solref=\"0.004 1\"/></equality>\n  <actuator>");
-  std::ofstream("one_servo_scene.xml")
-      << edited(shipped("gripper_sphere_scene.xml"),
-                "parallel_jaw_gripper.xml",
-                "one_servo_gripper.xml");
-  auto jaw                           = base;
-  jaw.scene_file                     = "one_servo_scene.xml";
+  const std::string jaw_hand = "parallel_jaw_gripper.xml";
+  auto              jaw      = base;
+  jaw.scene_file             = variant(
+      "one_servo",
+      edited(edited(shipped(jaw_hand),
+                    "<position name=\"right_jaw_servo\" class=\"jaw\" "
+                                "joint=\"right_jaw_joint\"/>",
+                    ""),
+             "<actuator>",
+             "<equality><joint joint1=\"right_jaw_joint\" "
+                         "joint2=\"left_jaw_joint\" solref=\"0.004 1\"/></equality>\n"
+                         "  <actuator>"),
+      jaw_hand);
   jaw.finger_joints                  = {};
   jaw.closing_actuators              = {"left_jaw_servo"};
   jaw.contact_links                  = {"left_pad", "right_pad"};
@@ -107,7 +125,7 @@ main()
 
   // Both servos with gear 2: an actuator's length is twice its jaw's
   // travel, so the 1 mm closure of the actuators moves each jaw 0.5 mm.
-  std::string geared_text = shipped("parallel_jaw_gripper.xml");
+  std::string geared_text = shipped(jaw_hand);
   for (const std::string side : {"left", "right"})
     geared_text = edited(geared_text,
                          "<position name=\"" + side +
@@ -117,13 +135,8 @@ main()
                              "_jaw_servo\" class=\"jaw\" joint=\"" + side +
                              "_jaw_joint\" gear=\"2\" ctrlrange=\"-0.01 "
                              "0.12\"/>");
-  std::ofstream("geared_gripper.xml") << geared_text;
-  std::ofstream("geared_scene.xml")
-      << edited(shipped("gripper_sphere_scene.xml"),
-                "parallel_jaw_gripper.xml",
-                "geared_gripper.xml");
   auto geared               = jaw;
-  geared.scene_file         = "geared_scene.xml";
+  geared.scene_file         = variant("geared", geared_text, jaw_hand);
   geared.closing_actuators  = {"left_jaw_servo", "right_jaw_servo"};
   geared.closing_speed      = 0.1;
   geared.grip               = 0.004;
@@ -137,30 +150,21 @@ main()
                   << std::endl;
 
   // The underactuated gripper and its bad variants.
-  auto ua              = base;
-  ua.scene_file        = PARAMETER_FILES "/mjcf/underactuated_sphere_scene.xml";
-  ua.base_position     = {0, 0, 0.05};
-  ua.finger_joints     = {};
-  ua.closing_actuators = {"grip"};
-  ua.contact_links     = {};
-  ua.closing_speed     = 1;
-  ua.grip              = 0.1;
-  ua.indentation.extra_angle = 0.1;
-  ua.indentation.samples     = 2;
+  auto ua                = softgrasp_tests::underactuated_sphere_grasp(base);
+  ua.contact_links       = {};
+  ua.indentation.samples = 2;
 
   // The same gripper closed by a keyframe of the closed hand: its ctrl
   // raises 'grip' (the pull servo stays), so 'grip' closes it.
-  std::ofstream("keyed_gripper.xml")
-      << edited(shipped("underactuated_gripper.xml"),
-                "<actuator>",
-                "<keyframe><key name=\"closed\" ctrl=\"2.5 0\"/></keyframe>\n"
-                "  <actuator>");
-  std::ofstream("keyed_scene.xml")
-      << edited(shipped("underactuated_sphere_scene.xml"),
-                "underactuated_gripper.xml",
-                "keyed_gripper.xml");
-  auto keyed              = ua;
-  keyed.scene_file        = "keyed_scene.xml";
+  const std::string ua_hand = "underactuated_gripper.xml";
+  auto              keyed   = ua;
+  keyed.scene_file          = variant(
+      "keyed",
+      edited(shipped(ua_hand),
+             "<actuator>",
+             "<keyframe><key name=\"closed\" ctrl=\"2.5 0\"/></keyframe>\n"
+                      "  <actuator>"),
+      ua_hand);
   keyed.closing_actuators = {};
   keyed.closing_keyframe  = "closed";
   const auto keyed_data   = run(keyed, log);
@@ -185,16 +189,13 @@ main()
       [&] { GraspSimulation simulation(unknown, log); },
       {"no actuator 'gripper_motor'", "grip, pull_servo"});
 
-  std::ofstream("motor_gripper.xml")
-      << edited(shipped("underactuated_gripper.xml"),
-                "<position name=\"grip\" tendon=\"grip_tendon\" kp=\"2\"",
-                "<motor name=\"grip\" tendon=\"grip_tendon\"");
-  std::ofstream("motor_scene.xml")
-      << edited(shipped("underactuated_sphere_scene.xml"),
-                "underactuated_gripper.xml",
-                "motor_gripper.xml");
-  auto motor       = ua;
-  motor.scene_file = "motor_scene.xml";
+  auto motor = ua;
+  motor.scene_file =
+      variant("motor",
+              edited(shipped(ua_hand),
+                     "<position name=\"grip\" tendon=\"grip_tendon\" kp=\"2\"",
+                     "<motor name=\"grip\" tendon=\"grip_tendon\""),
+              ua_hand);
   softgrasp_tests::expect_input_error(
       "an actuator that is not a position servo",
       [&] { GraspSimulation simulation(motor, log); },
@@ -230,31 +231,27 @@ main()
   const std::string pad_mesh =
       "          face=\"0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4\n"
       "                1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7\"/>";
-  {
-    std::string text  = shipped("parallel_jaw_gripper.xml");
-    const auto  start = text.find("<mesh name=\"pad\"");
-    const auto  end   = text.find("/>", start) + 2;
-    std::ofstream("missing_pad.xml") << text.replace(
-        start, end - start, "<mesh name=\"pad\" file=\"no_such_pad.stl\"/>");
-  }
-  std::ofstream("open_pad.xml")
-      << edited(shipped("parallel_jaw_gripper.xml"),
-                pad_mesh,
-                "          face=\"0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4\n"
-                "                1 2 6  1 6 5  2 3 7  2 7 6  3 0 4\"/>");
-  for (const std::string name : {"missing_pad", "open_pad"})
-    std::ofstream(name + "_scene.xml")
-        << edited(shipped("gripper_sphere_scene.xml"),
-                  "parallel_jaw_gripper.xml",
-                  name + ".xml");
-  auto missing       = jaw;
-  missing.scene_file = "missing_pad_scene.xml";
+  std::string text    = shipped(jaw_hand);
+  const auto  start   = text.find("<mesh name=\"pad\"");
+  const auto  end     = text.find("/>", start) + 2;
+  auto        missing = jaw;
+  missing.scene_file  = variant(
+      "missing_pad",
+      text.replace(
+          start, end - start, "<mesh name=\"pad\" file=\"no_such_pad.stl\"/>"),
+      jaw_hand);
   softgrasp_tests::expect_input_error(
       "a pad mesh file MuJoCo cannot read",
       [&] { GraspSimulation simulation(missing, log); },
       {"MuJoCo could not load", "no_such_pad.stl"});
   auto open       = jaw;
-  open.scene_file = "open_pad_scene.xml";
+  open.scene_file = variant(
+      "open_pad",
+      edited(shipped(jaw_hand),
+             pad_mesh,
+             "          face=\"0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4\n"
+             "                1 2 6  1 6 5  2 3 7  2 7 6  3 0 4\"/>"),
+      jaw_hand);
   softgrasp_tests::expect_input_error(
       "an open pad mesh",
       [&] { GraspSimulation simulation(open, log); },
