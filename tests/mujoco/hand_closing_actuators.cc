@@ -9,7 +9,8 @@
 //  - the underactuated gripper closed by naming a <keyframe> of the closed
 //    hand instead of its actuator: the keyframe's ctrl names 'grip';
 //  - the errors a new user meets, each naming the MJCF element and the
-//    fix: an unknown keyframe or actuator (valid ones listed), an actuator that
+//    fix: nothing named to close the hand, an unknown keyframe or
+//    actuator (valid ones listed), an actuator that
 //    is not a position servo (a <motor>), both 'Finger joints' and 'Closing
 //    actuators' given, a closing sign that opens the gripper (the other
 //    sign proposed), a hand too far from the object to touch, a pad mesh
@@ -181,6 +182,13 @@ main()
       "an unknown keyframe",
       [&] { GraspSimulation simulation(no_key, log); },
       {"no keyframe 'open'", "closed"});
+
+  auto nothing              = ua;
+  nothing.closing_actuators = {};
+  softgrasp_tests::expect_input_error(
+      "nothing named to close the hand",
+      [&] { GraspSimulation simulation(nothing, log); },
+      {"Neither", "in 'Rigid environment/Closing actuators'"});
 
   auto unknown              = ua;
   unknown.closing_actuators = {"gripper_motor"};

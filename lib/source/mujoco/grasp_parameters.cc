@@ -38,8 +38,7 @@ namespace softgrasp
                         "w, x, y, z (normalised on reading). Unit: 1.");
       prm.declare_entry(
           "Finger joints",
-          "thumb_proximal_joint, thumb_distal_joint, finger1_proximal_joint, "
-          "finger1_distal_joint, finger2_proximal_joint, finger2_distal_joint",
+          "",
           Patterns::List(Patterns::Anything(), 0),
           "Joints that close the hand, each driven by its own position "
           "actuator whose positive target closes: hinges (a finger), or "

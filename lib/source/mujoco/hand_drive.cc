@@ -156,7 +156,11 @@ namespace softgrasp
     if (drives.empty())
       throw InputError("Neither 'Rigid environment/Closing actuators' nor "
                        "'Finger joints' names what closes the hand. Fix: "
-                       "name the hand's closing actuators.");
+                       "name the position actuators that close it in "
+                       "'Rigid environment/Closing actuators' (or a "
+                       "keyframe of the closed hand in 'Closing keyframe', "
+                       "or joints with their own servos in 'Finger "
+                       "joints').");
     if (!weights.empty() && weights.size() != drives.size())
       throw InputError("'Rigid environment/Indentation/Joint weights' has " +
                        std::to_string(weights.size()) + " values for " +
