@@ -80,6 +80,10 @@ namespace softgrasp
                          closing,
                          parameters.indentation.joint_weights,
                          joint_unit);
+    coupled_drives =
+        std::any_of(drives.begin(),
+                    drives.end(),
+                    [](const HandDrive &drive) { return drive.coupled; });
     for (const auto &name : parameters.contact_links)
       required_links.push_back(mujoco.id(mjOBJ_GEOM, name, "geom"));
     // The slide joint is recorded whenever the scene has it (the base may
@@ -424,21 +428,19 @@ namespace softgrasp
     mj_copyData(equilibrium_data, m, d);
     for (const auto &drive : drives)
       equilibrium_targets.push_back(d->ctrl[drive.actuator]);
-    if (std::any_of(drives.begin(),
-                    drives.end(),
-                    [](const HandDrive &drive) { return drive.coupled; }))
+    if (coupled_drives)
     { // the loaded hand at the equilibrium targets: where closures start
       equilibrium_load = contact_generalized_force(m, d);
       bool settled     = false;
-      free_baseline    = loaded_hand_qpos(mujoco.model(),
-                                       d,
-                                       equilibrium_load,
-                                       drives,
-                                       equilibrium_targets,
-                                       1e-2 * parameters.velocity_tolerance,
-                                       parameters.settle_window,
-                                       parameters.maximum_time,
-                                       settled);
+      loaded_baseline  = loaded_hand_qpos(mujoco.model(),
+                                         d,
+                                         equilibrium_load,
+                                         drives,
+                                         equilibrium_targets,
+                                         1e-2 * parameters.velocity_tolerance,
+                                         parameters.settle_window,
+                                         parameters.maximum_time,
+                                         settled);
       if (!settled)
         log << "MuJoCo: the loaded hand did not come to rest within "
                "'Maximum time' at the equilibrium targets\n";
@@ -472,33 +474,29 @@ namespace softgrasp
   {
     mjModel *m = mujoco.model();
     std::copy(equilibrium_qpos.begin(), equilibrium_qpos.end(), fk_data->qpos);
-    const bool coupled =
-        std::any_of(drives.begin(),
-                    drives.end(),
-                    [](const HandDrive &drive) { return drive.coupled; });
-    if (!coupled) // one joint per drive at gear 1: the closure itself
+    if (!coupled_drives) // one joint per drive at gear 1: the closure itself
       for (const auto &drive : drives)
         fk_data->qpos[m->jnt_qposadr[drive.joints.front()]] +=
             drive.sign * drive.weight * closure;
     else
     {
-      if (closure != free_closure)
+      if (closure != loaded_closure)
       {
         std::vector<double> controls;
         for (std::size_t k = 0; k < drives.size(); ++k)
           controls.push_back(equilibrium_targets[k] +
                              drives[k].sign * drives[k].weight * closure);
-        bool settled = false;
-        free_qpos    = loaded_hand_qpos(m,
-                                     equilibrium_data,
-                                     equilibrium_load,
-                                     drives,
-                                     controls,
-                                     1e-2 * parameters.velocity_tolerance,
-                                     parameters.settle_window,
-                                     parameters.maximum_time,
-                                     settled);
-        free_closure = closure;
+        bool settled   = false;
+        loaded_qpos    = loaded_hand_qpos(m,
+                                       equilibrium_data,
+                                       equilibrium_load,
+                                       drives,
+                                       controls,
+                                       1e-2 * parameters.velocity_tolerance,
+                                       parameters.settle_window,
+                                       parameters.maximum_time,
+                                       settled);
+        loaded_closure = closure;
         if (!settled)
           log << "  (the loaded hand did not come to rest within "
                  "'Maximum time' at closure "
@@ -509,7 +507,7 @@ namespace softgrasp
         if (j != slide_joint)
         {
           const int q = m->jnt_qposadr[j];
-          fk_data->qpos[q] += free_qpos[q] - free_baseline[q];
+          fk_data->qpos[q] += loaded_qpos[q] - loaded_baseline[q];
         }
     }
     if (slide_joint >= 0)

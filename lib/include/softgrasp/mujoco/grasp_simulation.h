@@ -146,7 +146,9 @@ namespace softgrasp
     mjData                *closing_start    = nullptr; ///< before closing
     int                    object_body, base_body, slide_joint = -1;
     std::vector<HandDrive> drives;
-    std::vector<int>       link_geoms;
+    /// Whether a drive is coupled (its poses then come from the loaded hand).
+    bool             coupled_drives = false;
+    std::vector<int> link_geoms;
     /// The drives' joints' unit: "rad" (hinges) or "m" (slide joints).
     std::string joint_unit = "rad";
     /// The joints in the file (the drives', then the slide joint) and
@@ -157,10 +159,10 @@ namespace softgrasp
     std::vector<double> equilibrium_qpos, equilibrium_targets;
     /// Coupled drives: the contacts' generalized force at the equilibrium,
     /// and the loaded hand at the equilibrium targets (qpos).
-    std::vector<double> equilibrium_load, free_baseline;
-    /// The loaded hand's qpos at closure free_closure (pulls reuse it).
-    std::vector<double> free_qpos;
-    double              free_closure = -1;
+    std::vector<double> equilibrium_load, loaded_baseline;
+    /// The loaded hand's qpos at closure loaded_closure (pulls reuse it).
+    std::vector<double> loaded_qpos;
+    double              loaded_closure = -1;
     KinematicsData      data;
   };
 } // namespace softgrasp
