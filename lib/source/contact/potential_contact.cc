@@ -189,8 +189,14 @@ namespace softgrasp
       excess = coulomb_excess_on_faces();
     }
     const double tolerance = parameters.settle_tolerance;
-    const bool   settled   = change <= tolerance * largest + force_floor &&
-                         turn <= tolerance && penetration <= tolerance;
+    // on the faces the nodes' forces may settle while Coulomb's law at the
+    // points, against the pressure projected from them, is still off by a
+    // little more than the tolerance (1.1e-3 measured on the 2D drag): the
+    // step settles when it holds too
+    const bool settled =
+        change <= tolerance * largest + force_floor && turn <= tolerance &&
+        penetration <= tolerance &&
+        (!parameters.integrate_on_faces || excess <= tolerance);
     std::ostringstream line;
     line << std::scientific << std::setprecision(2)
          << "normal forces changed by " << change << " N (largest " << largest
