@@ -33,7 +33,8 @@ set(SOFTGRASP_LONG_TESTS
   mujoco/grasp_pull_fe mujoco/sweep_recovery
   contact/potential_agreement contact/potential_agreement.mpirun=2
   contact/drag_potential contact/drag_calculix contact/drag_integrators
-  contact/hertz_faces contact/drag_faces contact/drag_faces_2d)
+  contact/hertz_faces contact/drag_faces contact/drag_faces_2d
+  contact/drag_increments_3d)
 
 # Label the tests of the current directory: the category (the name up to
 # its '/'), and 'quick' and 'long' from the lists above.
