@@ -39,11 +39,10 @@ namespace softgrasp_tests
             overrides);
   }
 
-  /// Normal force (N, +z on the finger) and drag (N, -x) of the first geom
-  /// at @p mm of pull (the press ends at 0.5 s, then 20 mm/s).
+  /// The first geom's contact force at @p mm of pull (the press ends at
+  /// 0.5 s, then 20 mm/s).
   template <typename Records>
-  std::array<double, 2> deep_drag_forces(const Records &records,
-                                         const double   mm)
+  const auto &deep_drag_record(const Records &records, const double mm)
   {
     const double time   = 0.5 + mm / 20.0;
     const auto   record = std::find_if(
@@ -51,7 +50,16 @@ namespace softgrasp_tests
         records.end(),
         [&](const auto &r) { return std::abs(r.time - time) < 1e-9; });
     SG_CHECK(record != records.end(), "a record at every millimetre");
-    const auto &force = record->forces[0][0].force;
+    return record->forces[0][0];
+  }
+
+  /// Normal force (N, +z on the finger) and drag (N, -x) of the first geom
+  /// at @p mm of pull.
+  template <typename Records>
+  std::array<double, 2> deep_drag_forces(const Records &records,
+                                         const double   mm)
+  {
+    const auto &force = deep_drag_record(records, mm).force;
     return {{force[2], -force[0]}};
   }
 

@@ -63,13 +63,7 @@ namespace
     for (unsigned int mm = 0; mm <= 20; ++mm)
     {
       // the lateral force |(I - n n^T) F| against the reference normal
-      const double time   = 0.5 + mm / 20.0;
-      const auto   record = std::find_if(
-          records.begin(),
-          records.end(),
-          [&](const auto &r) { return std::abs(r.time - time) < 1e-9; });
-      SG_CHECK(record != records.end(), "a record at every millimetre");
-      const auto &f = record->forces[0][0];
+      const auto &f = deep_drag_record(records, mm);
       p.forces.push_back({{f.normal_force(), f.lateral_part.norm()}});
     }
     return p;

@@ -23,12 +23,14 @@ namespace softgrasp_tests
     const double t_press = 0.5, speed = 0.02; // s, m/s
 
     /// The drag's parameters: @p cells ("40, 8"), the integrator, the time
-    /// step @p dt (s; 0.025 s is 0.5 mm of pull) and @p contact, lines of
-    /// the Contact subsection (the enforcement, the integration, ...).
+    /// step @p dt (s; 0.025 s is 0.5 mm of pull), @p contact, lines of
+    /// the Contact subsection (the enforcement, the integration, ...), and
+    /// @p extra, whole subsections added at the end.
     inline std::string prm(const std::string &cells,
                            const std::string &contact,
                            const std::string &integrator,
-                           const double       dt)
+                           const double       dt,
+                           const std::string &extra = "")
     {
       std::ostringstream s;
       s << frictional_drag_prm(0.5)
@@ -44,7 +46,8 @@ namespace softgrasp_tests
         << "\n set End time = 1.5\n set Time step = " << dt
         << "\n set Maximum cut-backs = 4\nend\n"
         << "subsection Output\n set Directory = output-drag\n"
-        << " set VTU interval = 0\n set Verbose = false\nend\n";
+        << " set VTU interval = 0\n set Verbose = false\nend\n"
+        << extra;
       return s.str();
     }
 
@@ -53,7 +56,12 @@ namespace softgrasp_tests
     {
       double                pulled = 0; ///< mm, at the last converged step
       std::map<int, double> ratio;      ///< drag/normal at each mm
-      double       first_event = 1e9;   ///< pull at the first stick-slip (mm)
+      std::map<int, double> normal;     ///< normal force at each mm (N/m)
+      std::map<int, double> drag;       ///< drag at each mm (N/m)
+      /// The explicit integrator's largest relative energy balance error
+      /// after the first record.
+      double       energy_balance = 0;
+      double       first_event    = 1e9; ///< pull at the first stick-slip (mm)
       unsigned int events = 0, unsettled = 0;
       /// The largest Coulomb excess of a step, settled or not (history
       /// 'coulomb_excess': max (|f_t| - mu lambda) / (mu max lambda)).
@@ -61,7 +69,8 @@ namespace softgrasp_tests
     };
 
     /**
-     * Run the drag of prm(@p cells, @p contact, @p integrator, @p dt);
+     * Run the drag of prm(@p cells, @p contact, @p integrator, @p dt,
+     * @p extra);
      * every record: quasi-statically the support's
      * reaction balances the force on the cylinder; on the potential the
      * potential never rose along a Newton update and Coulomb's law holds
@@ -72,11 +81,12 @@ namespace softgrasp_tests
     inline Drag pull(const std::string &cells,
                      const std::string &contact,
                      const std::string &integrator,
-                     const double       dt)
+                     const double       dt,
+                     const std::string &extra = "")
     {
       const bool quasi_static = integrator == "quasi-static";
-      auto       run = make_solver<2>(prm(cells, contact, integrator, dt));
-      Drag       drag;
+      auto run = make_solver<2>(prm(cells, contact, integrator, dt, extra));
+      Drag drag;
       try
       {
         run->run();
@@ -98,7 +108,11 @@ namespace softgrasp_tests
         const double mm   = (t - t_press) * speed * 1e3;
         const double near = std::round(mm);
         if (t > t_press + 1e-9 && std::abs(mm - near) < 1e-6)
-          drag.ratio[int(near)] = std::abs(f.force[0]) / f.normal_force();
+        {
+          drag.ratio[int(near)]  = std::abs(f.force[0]) / f.normal_force();
+          drag.normal[int(near)] = f.normal_force();
+          drag.drag[int(near)]   = std::abs(f.force[0]);
+        }
         drag.pulled = std::max(drag.pulled, mm);
         if (table.value(k, "stick_slip_drop") > 0)
         {
@@ -111,6 +125,10 @@ namespace softgrasp_tests
                     f.force.head<2>())
                            .norm() <= 1e-6 * f.force.norm(),
                    "the support's reaction balances the contact force");
+        if (integrator == "explicit dynamic" && t > 0.03)
+          drag.energy_balance =
+              std::max(drag.energy_balance,
+                       std::abs(history.value(k, "energy_balance_error")));
         if (!potential || k == 0)
           continue;
         SG_CHECK(history.value(k, "energy_increases") == 0,
@@ -125,23 +143,27 @@ namespace softgrasp_tests
       return drag;
     }
 
-    /// The largest |a - b| of the ratios at the millimetres both have in
-    /// [from, until]; @p agree: each within rtol |b| + atol.
-    inline double largest_difference(const Drag  &a,
-                                     const Drag  &b,
-                                     const double from,
-                                     const double until,
-                                     const double rtol,
-                                     const double atol,
-                                     bool        &agree)
+    /// The largest |a - b| of the values (the ratios by default) at the
+    /// millimetres both have in [from, until]; @p agree: each within
+    /// rtol |b| + atol.
+    inline double
+    largest_difference(const Drag           &a,
+                       const Drag           &b,
+                       const double          from,
+                       const double          until,
+                       const double          rtol,
+                       const double          atol,
+                       bool                 &agree,
+                       std::map<int, double> Drag::*values = &Drag::ratio)
     {
-      double worst = 0;
-      agree        = true;
-      for (const auto &[mm, ratio] : b.ratio)
-        if (mm >= from && mm <= until && a.ratio.count(mm))
+      double      worst = 0;
+      const auto &va = a.*values, &vb = b.*values;
+      agree = true;
+      for (const auto &[mm, value] : vb)
+        if (mm >= from && mm <= until && va.count(mm))
         {
-          worst = std::max(worst, std::abs(a.ratio.at(mm) - ratio));
-          agree = agree && close(a.ratio.at(mm), ratio, rtol, atol);
+          worst = std::max(worst, std::abs(va.at(mm) - value));
+          agree = agree && close(va.at(mm), value, rtol, atol);
         }
       return worst;
     }
