@@ -70,13 +70,13 @@ namespace softgrasp_tests
 
     /**
      * Run the drag of prm(@p cells, @p contact, @p integrator, @p dt,
-     * @p extra);
-     * every record: quasi-statically the support's
-     * reaction balances the force on the cylinder; on the potential the
-     * potential never rose along a Newton update and Coulomb's law holds
-     * against the current normal forces (|f_t| <= mu lambda + 1e-3 mu max
-     * lambda) unless the step is reported unsettled. A run that stops (the
-     * semi-smooth path) is kept up to its last converged state.
+     * @p extra). At every record: quasi-statically the support's reaction
+     * balances the force on the cylinder; on the potential the potential
+     * never rose along a Newton update and Coulomb's law holds against the
+     * current normal forces (|f_t| <= mu lambda + 1e-3 mu max lambda)
+     * unless the step is reported unsettled; the explicit energy balance
+     * is recorded. A run that stops (the semi-smooth path) is kept up to
+     * its last converged state.
      */
     inline Drag pull(const std::string &cells,
                      const std::string &contact,
