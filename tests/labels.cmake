@@ -34,7 +34,7 @@ set(SOFTGRASP_LONG_TESTS
   contact/potential_agreement contact/potential_agreement.mpirun=2
   contact/drag_potential contact/drag_calculix contact/drag_integrators
   contact/hertz_faces contact/drag_faces contact/drag_faces_2d
-  contact/drag_increments_3d)
+  contact/drag_increments_3d mujoco/arm_grasp_quasi_static)
 
 # Label the tests of the current directory: the category (the name up to
 # its '/'), and 'quick' and 'long' from the lists above.
