@@ -3,7 +3,8 @@
 // contact surface, an unknown geom type, bad trajectories (times not
 // increasing, zero quaternion, NaN, missing file), a mesh geom without its
 // file, a body without geoms, a slave boundary id the mesh lacks, an
-// unknown contact enforcement and a NaN penalty factor.
+// unknown contact enforcement and a penalty factor that is neither a
+// positive number nor 'automatic'.
 #include "../contact_factory.h"
 #include "../solver_factory.h"
 #include "../tests.h"
@@ -83,8 +84,8 @@ main(int argc, char **argv)
                    "subsection Rigid bodies\n set Names = finger\nend\n");
   expect_error("slave id not on the mesh",
                base() + contact("17", 0) + body(ok));
-  // a misspelt enforcement lists the registered ones; a NaN penalty is
-  // refused by its pattern
+  // a misspelt enforcement lists the registered ones; a NaN, negative or
+  // misspelt penalty factor names 'automatic' and a number
   const std::string enforcement =
       "subsection Contact\n set Enforcement = incremental potentail\nend\n";
   expect_error("unknown contact enforcement",
@@ -93,4 +94,9 @@ main(int argc, char **argv)
                base() + contact("5", 0) + body(ok) +
                    "subsection Contact\n set Enforcement = incremental "
                    "potential\n set Penalty factor = nan\nend\n");
+  for (const std::string factor : {"-5", "autmatic", "1e3x"})
+    expect_error("penalty factor " + factor,
+                 base() + contact("5", 0) + body(ok) +
+                     "subsection Contact\n set Penalty factor = " + factor +
+                     "\nend\n");
 }

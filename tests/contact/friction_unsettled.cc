@@ -34,7 +34,9 @@ namespace
            "  set Trajectory = 0: -0.01, 0.0305, 0, 1, 0, 0, 0; "
            "0.5: -0.01, 0.0205, 0, 1, 0, 0, 0; 0.6: -0.008, 0.0205, 0, 1, 0, "
            "0, 0\n end\nend\n"
+           // the polish is node-wise (the implicit default is the faces)
            "subsection Contact\n set Enforcement = incremental potential\n"
+           " set Potential integration = nodes\n"
            " set Maximum outer iterations = " +
            std::to_string(max_outer) +
            "\n set Polish after = " + std::to_string(polish_after) +

@@ -9,8 +9,8 @@
 //  - the run reaches the end of the pull;
 //  - Coulomb at every contact node at the end: |f_t| <= mu f_n + 2e-3 mu
 //    max f_n (the default enforcement with friction, the incremental
-//    potential, lags the normal forces and frames within its settle
-//    tolerance of 1e-3; the multipliers hold it exactly);
+//    potential, here node-wise, lags the normal forces and frames within
+//    its settle tolerance of 1e-3; the multipliers hold it exactly);
 //  - the drag exceeds mu times the normal force once the contact slides
 //    (the tissue heaped ahead of the cylinder pushes back: ploughing);
 //  - balance: at the end the link force equals the base reaction (the
@@ -34,6 +34,9 @@ main(int argc, char **argv)
       "subsection Time\n set Integrator = implicit dynamic\n"
       " set End time = 1.5\n set Time step = 0.05\nend\n"
       "subsection Linear solver\n set Type = direct\nend\n"
+      // Coulomb node by node (the faces hold it at their Gauss points:
+      // contact/drag_faces_2d)
+      "subsection Contact\n set Potential integration = nodes\nend\n"
       "subsection Output\n set Directory = output-drag\n"
       " set VTU interval = 0\n set Verbose = false\nend\n";
   auto solver = make_solver<2>(prm);

@@ -1,8 +1,9 @@
 // Frictionless contact with each implicit step the minimisation of one
-// potential ('Contact/Enforcement = incremental potential': an augmented
-// Lagrangian on each node's gap, Uzawa outer iterations until the
-// penetration is below 1e-3 of the node spacing) against the exact
-// Lagrange multipliers of the default enforcement, on the same meshes:
+// potential ('Contact/Enforcement = incremental potential', 'Potential
+// integration = nodes': an augmented Lagrangian on each node's gap, Uzawa outer
+// iterations until the penetration is below 1e-3 of the node spacing) against
+// the exact Lagrange multipliers of the default enforcement, on the same
+// meshes:
 //  1. the contact patch test (a flat rigid plate compresses a randomly
 //     distorted block by 10 %; 2D and 3D, Q1 and Q2): the pressure uniform
 //     within 0.1 %, the plate force within 0.1 % of the multipliers' and,
@@ -30,8 +31,10 @@ using namespace softgrasp_tests;
 
 namespace
 {
+  // at the nodes, as the multipliers (the implicit default is the faces)
   const std::string potential =
-      "subsection Contact\n set Enforcement = incremental potential\nend\n";
+      "subsection Contact\n set Enforcement = incremental potential\n"
+      " set Potential integration = nodes\nend\n";
 
   /// The largest penetration over the node spacing, and the Newton
   /// updates that raised the potential, of a finished run.

@@ -1,7 +1,9 @@
 #include <deal.II/base/utilities.h>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/parameter_checks.h>
 #include <softgrasp/contact/contact_parameters.h>
 #include <softgrasp/contact/implicit_contact.h>
+#include <string>
 
 namespace softgrasp
 {
@@ -54,15 +56,19 @@ namespace softgrasp
         "without. The run's summary names the one in use. The explicit "
         "solver has its own enforcement. Valid names: automatic, " +
             ContactEnforcementRegistry<3>::names_separated_by(", ") + ".");
-    prm.declare_entry("Penalty factor",
-                      "100",
-                      Patterns::Double(1e-6),
-                      "Incremental potential: the augmented Lagrangian's "
-                      "normal penalty k = factor * 2 mu_0 h (N/m; mu_0 the "
-                      "largest initial shear modulus, h the node's surface "
-                      "spacing). Larger values need fewer outer iterations "
-                      "and make the tangent stiffer. Unit: 1. Range: "
-                      "(0, inf).");
+    prm.declare_entry(
+        "Penalty factor",
+        "automatic",
+        Patterns::Anything(),
+        "Incremental potential: the augmented Lagrangian's normal penalty k "
+        "= factor * 2 mu_0 h (N/m; mu_0 the largest initial shear modulus, "
+        "h the node's surface spacing). Larger values need fewer outer "
+        "iterations and make the tangent stiffer. 'automatic' (the "
+        "default): 1000 with the contact on the faces, 100 on the nodes "
+        "('Potential integration'; at 100 on the faces the weighted "
+        "penetration stays near 1e-3 of the spacing and steps are accepted "
+        "unsettled, doc/contact.md). Unit: 1. Range: (0, inf) or "
+        "automatic.");
     prm.declare_entry("Slip tolerance",
                       "1e-5",
                       Patterns::Double(1e-12),
@@ -129,22 +135,23 @@ namespace softgrasp
         "('polished') show where it was used. 0: never. Unit: 1.");
     prm.declare_entry(
         "Potential integration",
-        "nodes",
-        Patterns::Selection("nodes|faces"),
+        "automatic",
+        Patterns::Selection("automatic|nodes|faces"),
         "Incremental potential: where the gap and the friction potential are "
         "evaluated on the slave surface. 'nodes': at each slave node, "
         "weighted by its area (node-to-surface; the rigid surface may pass "
         "between the nodes, and on a deep drag the nodes beside a rounded "
-        "end are pushed until a surface cell folds). 'faces': at the Gauss "
-        "points of each slave face (degree + 2 per direction), the position "
-        "interpolated from the face's nodes, the multipliers on the nodes "
-        "(a face-integrated gap, as CalculiX's surface-to-surface contact; "
-        "no fold on the deep drag); about 9 to 16 times the points, the "
-        "same unknowns. With 'faces' use 'Penalty factor = 1000': at 100 "
-        "the weighted penetration stays near 1e-3 of the spacing and steps "
-        "are accepted unsettled (doc/contact.md). The explicit integrator "
-        "reads it too: 'faces' puts its contact on the faces ('Explicit "
-        "faces'). Unit: none.");
+        "end are pushed until a surface cell folds, or snap from stick to "
+        "slip). 'faces': at the Gauss points of each slave face (degree + 2 "
+        "per direction), the position interpolated from the face's nodes, "
+        "the multipliers on the nodes (a face-integrated gap, as CalculiX's "
+        "surface-to-surface contact; no fold and no snap on the deep drags, "
+        "doc/contact.md); about 9 to 16 times the points, the same "
+        "unknowns. The explicit integrator reads it too: 'faces' puts its "
+        "contact on the faces ('Explicit faces', one MPI rank), 'nodes' "
+        "solves dual mortar multipliers node by node. 'automatic' (the "
+        "default): faces for the implicit solvers, nodes for the explicit "
+        "integrator. The run's summary names the one in use. Unit: none.");
     prm.declare_entry(
         "Explicit faces",
         "potential",
@@ -162,6 +169,48 @@ namespace softgrasp
         "meshes, but it folds where the nodes do; doc/contact.md). "
         "Unit: none.");
     prm.leave_subsection();
+  }
+
+  namespace
+  {
+    /// 'Contact/Penalty factor' (@p prm in "Contact"): a positive number,
+    /// or 0 for 'automatic'.
+    double parsed_penalty_factor(const ParameterHandler &prm)
+    {
+      if (Utilities::trim(prm.get("Penalty factor")) == "automatic")
+        return 0;
+      try
+      {
+        return CheckedSection(prm, "Contact")
+            .get_positive("Penalty factor", "");
+      }
+      catch (const InputError &error)
+      {
+        throw InputError(std::string(error.what()) +
+                         " Or give 'automatic': 1000 with the contact on "
+                         "the faces, 100 on the nodes.");
+      }
+    }
+
+    /// The parameters with the integration and the penalty factor set.
+    ContactParameters with_integration(ContactParameters parameters,
+                                       const bool        faces)
+    {
+      parameters.integrate_on_faces = faces;
+      if (parameters.penalty_factor == 0)
+        parameters.penalty_factor = faces ? 1000 : 100;
+      return parameters;
+    }
+  } // namespace
+
+  ContactParameters ContactParameters::for_implicit() const
+  {
+    return with_integration(*this, potential_integration != "nodes");
+  }
+
+  ContactParameters ContactParameters::for_explicit() const
+  {
+    return with_integration(*this, potential_integration == "faces");
   }
 
   void ContactParameters::parse_parameters(ParameterHandler &prm)
@@ -188,14 +237,15 @@ namespace softgrasp
                        "automatic, " +
                        ContactEnforcementRegistry<3>::names_separated_by(", ") +
                        ". Fix: use one of them.");
-    penalty_factor        = prm.get_double("Penalty factor");
+    penalty_factor        = parsed_penalty_factor(prm);
     slip_tolerance        = prm.get_double("Slip tolerance");
     settle_tolerance      = prm.get_double("Settle tolerance");
     max_outer_iterations  = prm.get_integer("Maximum outer iterations");
     max_newton_iterations = prm.get_integer("Maximum Newton iterations");
     accept_unsettled      = prm.get("Unsettled steps") == "accept";
     polish_after          = prm.get_integer("Polish after");
-    integrate_on_faces    = prm.get("Potential integration") == "faces";
+    potential_integration = prm.get("Potential integration");
+    integrate_on_faces    = potential_integration == "faces";
     explicit_dual_mortar  = prm.get("Explicit faces") == "dual mortar";
     prm.leave_subsection();
   }

@@ -25,8 +25,8 @@ namespace softgrasp
           "correction with a direct solver on one MPI rank, and this run has " +
           std::to_string(Utilities::MPI::n_mpi_processes(comm)) +
           ". Fix: run the explicit integrator on one rank, or use "
-          "'Explicit faces = dual mortar' or 'Potential integration = nodes', "
-          "which run on any number of ranks.");
+          "'Explicit faces = dual mortar' or 'Potential integration = nodes' "
+          "(or 'automatic'), which run on any number of ranks.");
     degree = std::max(1u, system.fe().degree);
     // the columns of the Newton system: the free dofs of the slave nodes
     std::unordered_map<types::global_dof_index, int> column_of;

@@ -51,11 +51,11 @@ namespace softgrasp
                                      const double                 shear_modulus)
   {
     sim.emplace(run);
-    auto contact =
-        std::make_unique<ExplicitContact<dim>>(run.contact_parameters(),
-                                               run.rigid_bodies(),
-                                               run.timers(),
-                                               shear_modulus);
+    auto contact = std::make_unique<ExplicitContact<dim>>(
+        run.contact_parameters().for_explicit(),
+        run.rigid_bodies(),
+        run.timers(),
+        shear_modulus);
     contact->set_reference_step(sim->parameters().time.step_size);
     contact->setup(run.solid());
     explicit_contact = contact.get();

@@ -35,10 +35,11 @@ namespace softgrasp
   ImplicitStepper<dim>::make_contact(const SimulationAccess<dim> &run,
                                      const double                 shear_modulus)
   {
-    auto contact = create_implicit_contact<dim>(run.contact_parameters(),
-                                                run.rigid_bodies(),
-                                                shear_modulus,
-                                                run.timers());
+    auto contact =
+        create_implicit_contact<dim>(run.contact_parameters().for_implicit(),
+                                     run.rigid_bodies(),
+                                     shear_modulus,
+                                     run.timers());
     contact->setup(run.solid());
     run.solid().set_nodal_conditions(contact.get());
     mortar = contact.get();

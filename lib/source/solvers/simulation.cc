@@ -3,10 +3,30 @@
 #include <softgrasp/postprocess/contact_force_report.h>
 #include <softgrasp/postprocess/corner_jacobian.h>
 #include <softgrasp/solvers/simulation.h>
+#include <sstream>
 
 namespace softgrasp
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// Where the implicit solvers' incremental potential puts its contact
+    /// terms and its penalty factor, for the run's summary; empty for the
+    /// Lagrange multipliers.
+    std::string potential_summary(const ContactParameters &given)
+    {
+      if (given.implicit_enforcement() != "incremental potential")
+        return "";
+      const ContactParameters used = given.for_implicit();
+      std::ostringstream      text;
+      text << ", on the " << (used.integrate_on_faces ? "faces" : "nodes")
+           << (given.potential_integration == "automatic" ? " (automatic)" : "")
+           << ", penalty factor " << used.penalty_factor
+           << (given.penalty_factor == 0 ? " (automatic)" : "");
+      return text.str();
+    }
+  } // namespace
 
   template <int dim>
   void Simulation<dim>::declare_parameters(ParameterHandler &prm)
@@ -306,7 +326,7 @@ namespace softgrasp
                               contact_parameters.friction_coefficient) +
                           ")"
                     : "")
-            << std::endl;
+            << potential_summary(contact_parameters) << std::endl;
     for (const auto id : material_library.material_ids())
       pcout << "Material " << static_cast<unsigned>(id) << ": "
             << material_library.get(id).summary() << std::endl;

@@ -28,8 +28,10 @@ namespace softgrasp
     /// Lagrange multipliers without.
     std::string implicit_enforcement() const;
     /// Incremental potential: the normal penalty k = factor * 2 mu_0 h of
-    /// the augmented Lagrangian, as the complementarity parameter (1).
-    double penalty_factor = 100;
+    /// the augmented Lagrangian, as the complementarity parameter (1). Its
+    /// value for the integration in use (for_implicit(), for_explicit());
+    /// as parsed, 0 where 'Penalty factor = automatic'.
+    double penalty_factor = 0;
     /// Incremental potential: the slip length eps of the smoothed Coulomb
     /// law (m): a node creeps by at most eps per step while it sticks.
     double slip_tolerance = 1e-5;
@@ -51,16 +53,28 @@ namespace softgrasp
     /// (and again after as many more) the step is polished: Newton with
     /// friction against the current normal forces; 0: never.
     unsigned int polish_after = 10;
+    /// 'Potential integration' as given: "automatic", "nodes" or "faces".
+    std::string potential_integration = "automatic";
     /// Incremental potential: where its contact terms are evaluated on the
     /// slave surface: at the nodes, each weighted by its area (false), or
     /// at the Gauss points of each slave face, the gap interpolated
-    /// between the nodes (true; 'Potential integration = faces'). The
-    /// explicit integrator's contact then acts on the faces too.
+    /// between the nodes (true). The explicit integrator's contact then
+    /// acts on the faces too. Its value for the integrator in use
+    /// (for_implicit(), for_explicit()).
     bool integrate_on_faces = false;
     /// The explicit integrator on faces: the implicit solvers' face
     /// potential per step (false) or dual mortar weighted gaps (true;
     /// 'Explicit faces = dual mortar').
     bool explicit_dual_mortar = false;
+
+    /// These parameters with 'automatic' resolved for the implicit
+    /// solvers: the contact terms on the faces, penalty factor 1000 (100
+    /// on the nodes).
+    ContactParameters for_implicit() const;
+    /// These parameters with 'automatic' resolved for the explicit
+    /// integrator: node-wise dual mortar contact (it runs on any number of
+    /// MPI ranks), penalty factor 100 (1000 on the faces).
+    ContactParameters for_explicit() const;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void        parse_parameters(dealii::ParameterHandler &prm);
