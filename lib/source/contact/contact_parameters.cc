@@ -245,7 +245,6 @@ namespace softgrasp
     accept_unsettled      = prm.get("Unsettled steps") == "accept";
     polish_after          = prm.get_integer("Polish after");
     potential_integration = prm.get("Potential integration");
-    integrate_on_faces    = potential_integration == "faces";
     explicit_dual_mortar  = prm.get("Explicit faces") == "dual mortar";
     prm.leave_subsection();
   }

@@ -59,8 +59,8 @@ namespace softgrasp
     /// slave surface: at the nodes, each weighted by its area (false), or
     /// at the Gauss points of each slave face, the gap interpolated
     /// between the nodes (true). The explicit integrator's contact then
-    /// acts on the faces too. Its value for the integrator in use
-    /// (for_implicit(), for_explicit()).
+    /// acts on the faces too. Set only by for_implicit() and
+    /// for_explicit(), for the integrator in use.
     bool integrate_on_faces = false;
     /// The explicit integrator on faces: the implicit solvers' face
     /// potential per step (false) or dual mortar weighted gaps (true;
