@@ -9,7 +9,7 @@
 # on 2 cores after `--target all tests` (doc/benchmarks.md).
 set(SOFTGRASP_QUICK_TESTS
   # library modules
-  materials/tangent_consistency materials/presets
+  materials/tangent_consistency materials/presets materials/material_fit
   postprocess/principal_strains postprocess/tissue_injury.mpirun=2
   postprocess/corner_jacobian
   mechanics/bad_input mechanics/implicit_dynamics
