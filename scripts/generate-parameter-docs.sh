@@ -7,6 +7,9 @@ mkdir -p "$root/doc/parameters"
 "$root/build/examples/tissue_curves/tissue_curves" --print-parameters \
   > "$root/doc/parameters/tissue_curves.prm"
 echo "wrote doc/parameters/tissue_curves.prm"
+"$root/build/examples/material_fit/material_fit" --print-parameters \
+  > "$root/doc/parameters/material_fit.prm"
+echo "wrote doc/parameters/material_fit.prm"
 "$root/build/examples/cook_membrane/cook_membrane" --print-parameters \
   > "$root/doc/parameters/solver.prm"
 echo "wrote doc/parameters/solver.prm (every solver program: quasi-static and explicit)"

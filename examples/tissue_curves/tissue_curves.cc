@@ -228,13 +228,7 @@ main(int argc, char **argv)
     // generated from the code (one material subsection shown).
     if (print)
     {
-      ParameterReader::declare_program_entry(prm);
-      prm.enter_subsection("Materials");
-      prm.enter_subsection("Material 0");
-      MaterialLibrary::declare_material_parameters(prm);
-      prm.leave_subsection();
-      prm.leave_subsection();
-      prm.print_parameters(std::cout, ParameterHandler::PRM);
+      MaterialLibrary::print_parameters(prm, std::cout);
       return 0;
     }
     MaterialLibrary::parse_input(prm, prm_file);

@@ -244,6 +244,31 @@ namespace
         },
         "The start values of the fit are refused");
   }
+  /// A material the model refuses leaves the parameter handler where it
+  /// was: the next trial of a fit reads its entries again.
+  void usable_after_refusal()
+  {
+    ParameterHandler prm;
+    parse(prm,
+          "set Model = neo-Hookean\nsubsection Volumetric\n set Poisson's "
+          "ratio = 0.45\nend\nsubsection neo-Hookean\n set Shear modulus = "
+          "1e3\nend");
+    MaterialFit fit(prm, 0, {"neo-Hookean/Shear modulus"});
+    bool        refused = false;
+    try
+    {
+      fit.material({{-1e3}});
+    }
+    catch (const InputError &)
+    {
+      refused = true;
+    }
+    SG_CHECK(refused, "a negative shear modulus is refused");
+    const double mu = fit.material({{2e3}})->initial_shear_modulus();
+    deallog << "after a refused modulus the next trial has mu_0 = " << mu
+            << " Pa" << std::endl;
+    SG_CHECK(std::abs(mu - 2e3) < 1e-9, "the next trial is read");
+  }
 } // namespace
 
 int
@@ -253,4 +278,5 @@ main()
   mooney_rivlin();
   ogden();
   bad_input();
+  usable_after_refusal();
 }

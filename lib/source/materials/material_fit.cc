@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iomanip>
 #include <softgrasp/base/input_error.h>
+#include <softgrasp/base/scoped_subsection.h>
 #include <softgrasp/materials/homogeneous_loading.h>
 #include <softgrasp/materials/material_fit.h>
 #include <softgrasp/materials/material_library.h>
@@ -223,29 +224,21 @@ namespace softgrasp
     {
       const auto  parts = path_parts(entry);
       std::string text;
-      prm.enter_subsection("Materials");
-      prm.enter_subsection(section);
-      unsigned int depth = 2;
       try
       {
-        for (std::size_t k = 0; k + 1 < parts.size(); ++k, ++depth)
-          prm.enter_subsection(parts[k]);
-        text = prm.get(parts.back());
+        const auto scope = enter(parts);
+        text             = prm.get(parts.back());
         // get() of an undeclared entry gives "" in release builds; set()
         // throws
         prm.set(parts.back(), text);
       }
       catch (const std::exception &)
       {
-        for (; depth > 0; --depth)
-          prm.leave_subsection();
         throw InputError("'Materials/" + section + "/" + entry +
                          "' is not an entry of the material. Fix: name an "
                          "entry of its model's subsection, such as "
                          "'Ogden/Moduli' or 'neo-Hookean/Shear modulus'.");
       }
-      for (; depth > 0; --depth)
-        prm.leave_subsection();
       std::vector<double> values;
       for (const auto &field : Utilities::split_string_list(text, ','))
       {
@@ -268,18 +261,24 @@ namespace softgrasp
     }
   }
 
+  std::vector<std::unique_ptr<ScopedSubsection>>
+  MaterialFit::enter(const std::vector<std::string> &parts) const
+  {
+    std::vector<std::unique_ptr<ScopedSubsection>> scope;
+    scope.push_back(std::make_unique<ScopedSubsection>(prm, "Materials"));
+    scope.push_back(std::make_unique<ScopedSubsection>(prm, section));
+    for (std::size_t k = 0; k + 1 < parts.size(); ++k)
+      scope.push_back(std::make_unique<ScopedSubsection>(prm, parts[k]));
+    return scope;
+  }
+
   void MaterialFit::set_entries(const std::vector<std::vector<double>> &values)
   {
     for (std::size_t e = 0; e < entries.size(); ++e)
     {
       const auto parts = path_parts(entries[e]);
-      prm.enter_subsection("Materials");
-      prm.enter_subsection(section);
-      for (std::size_t k = 0; k + 1 < parts.size(); ++k)
-        prm.enter_subsection(parts[k]);
+      const auto scope = enter(parts);
       prm.set(parts.back(), joined(values[e]));
-      for (std::size_t k = 0; k + 1 < parts.size() + 2; ++k)
-        prm.leave_subsection();
     }
   }
 
@@ -287,22 +286,8 @@ namespace softgrasp
   MaterialFit::material(const std::vector<std::vector<double>> &values)
   {
     set_entries(values);
-    prm.enter_subsection("Materials");
-    prm.enter_subsection(section);
-    try
-    {
-      auto result =
-          MaterialLibrary::create_material(prm, "Materials/" + section, "fit");
-      prm.leave_subsection();
-      prm.leave_subsection();
-      return result;
-    }
-    catch (...)
-    {
-      prm.leave_subsection();
-      prm.leave_subsection();
-      throw;
-    }
+    const auto scope = enter({""});
+    return MaterialLibrary::create_material(prm, "Materials/" + section, "fit");
   }
 
   double MaterialFit::nominal_stress(const Material       &material,
@@ -365,7 +350,7 @@ namespace softgrasp
     Result result;
     result.entries     = entries;
     result.values      = residuals.parameters(x);
-    result.evaluations = residuals.evaluations;
+    result.evaluations = functor.evaluations;
     result.status      = status_text(status);
     result.converged   = status >= 1 && status <= 4;
     const auto fitted  = material(result.values);
@@ -384,24 +369,34 @@ namespace softgrasp
 
   std::string MaterialFit::Result::prm_lines() const
   {
-    std::ostringstream out;
-    for (std::size_t e = 0; e < entries.size(); ++e)
+    // entries in the same subsection share one block: close the
+    // subsections the next entry is not in, open those it is in
+    std::ostringstream       out;
+    std::vector<std::string> open; // the subsections entered so far
+    const auto               indent = [](const std::size_t depth)
+    { return std::string(2 * depth, ' '); };
+    for (std::size_t e = 0; e <= entries.size(); ++e)
     {
-      const auto  parts = path_parts(entries[e]);
-      std::string indent;
-      for (std::size_t k = 0; k + 1 < parts.size(); ++k, indent += "  ")
-        out << indent << "subsection " << parts[k] << "\n";
-      out << indent << "set " << parts.back() << " = ";
-      std::ostringstream values_text;
-      values_text << std::setprecision(8);
+      std::vector<std::string>       parts = e < entries.size()
+                                                 ? path_parts(entries[e])
+                                                 : std::vector<std::string>{""};
+      const std::vector<std::string> path(parts.begin(), parts.end() - 1);
+      std::size_t                    common = 0;
+      while (common < open.size() && common < path.size() &&
+             open[common] == path[common])
+        ++common;
+      for (; open.size() > common; open.pop_back())
+        out << indent(open.size() - 1) << "end\n";
+      for (; open.size() < path.size(); open.push_back(path[open.size()]))
+        out << indent(open.size()) << "subsection " << path[open.size()]
+            << "\n";
+      if (e == entries.size())
+        break;
+      out << indent(open.size()) << "set " << parts.back() << " = "
+          << std::setprecision(8);
       for (std::size_t k = 0; k < values[e].size(); ++k)
-        values_text << (k > 0 ? ", " : "") << values[e][k];
-      out << values_text.str() << "\n";
-      for (std::size_t k = parts.size() - 1; k > 0; --k)
-      {
-        indent.resize(2 * (k - 1));
-        out << indent << "end\n";
-      }
+        out << (k > 0 ? ", " : "") << values[e][k];
+      out << "\n";
     }
     return out.str();
   }

@@ -2,6 +2,7 @@
 #include <fstream>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_checks.h>
+#include <softgrasp/base/scoped_subsection.h>
 #include <softgrasp/materials/material_library.h>
 #include <softgrasp/materials/tissue_presets.h>
 #include <sstream>
@@ -160,44 +161,46 @@ namespace softgrasp
                        ").");
     std::unique_ptr<IsochoricModel> model = IsochoricModelRegistry::create(
         model_name, "material model in '" + section.path_of("Model") + "'");
-    prm.enter_subsection(model_name);
-    model->parse_parameters(prm, path + "/" + model_name);
-    prm.leave_subsection();
+    {
+      const ScopedSubsection model_section(prm, model_name);
+      model->parse_parameters(prm, path + "/" + model_name);
+    }
 
     const double density = section.get_positive("Density", "kg/m^3");
 
-    prm.enter_subsection("Volumetric");
-    const CheckedSection volumetric(prm, path + "/Volumetric");
-    const bool           has_kappa = volumetric.is_set("Bulk modulus");
-    const bool           has_nu    = volumetric.is_set("Poisson's ratio");
-    if (has_kappa == has_nu)
+    double      kappa = 0;
+    std::string energy_name;
     {
-      prm.leave_subsection();
-      throw InputError(
-          "Subsection '" + path +
-          "/Volumetric' must set exactly one of 'Bulk "
-          "modulus' (Pa) and 'Poisson's ratio' (1), but " +
-          (has_kappa ? "both are set" : "neither is set") +
-          ". Fix: set one and clear the other with 'set <name> =' (a preset "
-          "may have set one).");
+      const ScopedSubsection volumetric_section(prm, "Volumetric");
+      const CheckedSection   volumetric(prm, path + "/Volumetric");
+      const bool             has_kappa = volumetric.is_set("Bulk modulus");
+      const bool             has_nu    = volumetric.is_set("Poisson's ratio");
+      if (has_kappa == has_nu)
+        throw InputError(
+            "Subsection '" + path +
+            "/Volumetric' must set exactly one of 'Bulk "
+            "modulus' (Pa) and 'Poisson's ratio' (1), but " +
+            (has_kappa ? "both are set" : "neither is set") +
+            ". Fix: set one and clear the other with 'set <name> =' (a "
+            "preset may have set one).");
+      if (has_kappa)
+        kappa = volumetric.get_positive("Bulk modulus", "Pa");
+      else
+      {
+        const double nu =
+            volumetric.get_in_range("Poisson's ratio", -1.0, 0.5, false, "");
+        if (nu <= -1.0)
+          throw InputError("Parameter '" +
+                           volumetric.path_of("Poisson's ratio") +
+                           "' must lie in (-1, 0.5). Fix: choose a value in "
+                           "that range.");
+        kappa = 2.0 * model->initial_shear_modulus() * (1.0 + nu) /
+                (3.0 * (1.0 - 2.0 * nu));
+      }
+      energy_name = prm.get("Energy");
     }
-    double kappa = 0;
-    if (has_kappa)
-      kappa = volumetric.get_positive("Bulk modulus", "Pa");
-    else
-    {
-      const double nu =
-          volumetric.get_in_range("Poisson's ratio", -1.0, 0.5, false, "");
-      if (nu <= -1.0)
-        throw InputError("Parameter '" + volumetric.path_of("Poisson's ratio") +
-                         "' must lie in (-1, 0.5). Fix: choose a value in "
-                         "that range.");
-      kappa = 2.0 * model->initial_shear_modulus() * (1.0 + nu) /
-              (3.0 * (1.0 - 2.0 * nu));
-    }
-    const VolumetricEnergy energy(
-        VolumetricEnergy::type_from_name(prm.get("Energy")), kappa);
-    prm.leave_subsection();
+    const VolumetricEnergy energy(VolumetricEnergy::type_from_name(energy_name),
+                                  kappa);
 
     std::string name = Utilities::trim(prm.get("Name"));
     if (name.empty())
@@ -221,6 +224,18 @@ namespace softgrasp
     declare_material_parameters(prm);
     prm.parse_input_from_string(fragment);
     return create_material(prm, name, name);
+  }
+
+  void MaterialLibrary::print_parameters(ParameterHandler &prm,
+                                         std::ostream     &out)
+  {
+    ParameterReader::declare_program_entry(prm);
+    {
+      const ScopedSubsection materials(prm, "Materials");
+      const ScopedSubsection material(prm, "Material 0");
+      declare_material_parameters(prm);
+    }
+    prm.print_parameters(out, ParameterHandler::PRM);
   }
 
   void MaterialLibrary::parse_parameters(ParameterHandler &prm)

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
+#include <memory>
+#include <softgrasp/base/scoped_subsection.h>
 #include <softgrasp/materials/material.h>
 #include <string>
 #include <vector>
@@ -118,6 +120,11 @@ namespace softgrasp
     const std::string                section; // "Material <id>"
     std::vector<std::string>         entries;
     std::vector<std::vector<double>> start; // per entry
+
+    /// Enter Materials/Material <id> and the subsections of an entry's
+    /// path @p parts (all but the last), until the result is destroyed.
+    std::vector<std::unique_ptr<ScopedSubsection>>
+    enter(const std::vector<std::string> &parts) const;
 
     /// Set the entries in prm to @p values.
     void set_entries(const std::vector<std::vector<double>> &values);

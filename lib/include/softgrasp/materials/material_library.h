@@ -5,6 +5,7 @@
 #include <deal.II/base/types.h>
 #include <map>
 #include <memory>
+#include <ostream>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/materials/material.h>
 #include <string>
@@ -48,6 +49,15 @@ namespace softgrasp
 
     /// Declare one material's entries in the current subsection of @p prm.
     static void declare_material_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * For --print-parameters of a program whose entries are declared in
+     * @p prm (with declare_parameters()): add the 'Program' entry and one
+     * material subsection ('Materials/Material 0', standing for every id)
+     * and print every parameter with its documentation to @p out.
+     */
+    static void print_parameters(dealii::ParameterHandler &prm,
+                                 std::ostream             &out);
 
     /**
      * Read @p filename into @p prm (which holds the caller's declarations
