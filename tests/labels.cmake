@@ -22,7 +22,8 @@ set(SOFTGRASP_QUICK_TESTS
   style/floors package/find_package_consumer
   # the softgrasp program, every example, every study
   programs/softgrasp_no_file programs/softgrasp_hertz
-  examples/tissue_curves examples/cook_membrane examples/ironing
+  examples/tissue_curves examples/material_fit examples/cook_membrane
+  examples/ironing
   examples/hertz_indentation examples/frictional_drag contact/drag_example_3d
   studies/sphere_squeeze studies/sphere_squeeze_missing_file
   studies/grasp_pull_sweep_bad_level)

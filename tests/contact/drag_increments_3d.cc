@@ -1,22 +1,24 @@
 // The deep 3D drag on the faces (deep_drag.h: the shipped
 // deep_drag_3d.prm on mesh A, 4 mm cells, Q1-P0, mu = 0.5, a capsule
 // pressed 10 mm and pulled 20 mm; 'Potential integration = faces',
-// 'Penalty factor = 1000', eps = 1e-5 m) at pull increments of 0.125,
-// 0.5 and 1 mm, quasi-statically, and with implicit dynamics at 1 mm (the
-// pull at 20 mm/s; at 0.5 mm contact/drag_faces compares the two):
-//  - every run reaches 20 mm; the lateral force's decline from 19 to
-//    20 mm, spread over the 0.125 mm run's eight steps, is reported as a
-//    stick-slip event (a drop of over 3 % in one step: 3.2 %) by the 1 mm
-//    runs only: the count is printed, not checked;
+// 'Penalty factor = 1000', the example's slip speed 4e-4 m/s: the slip
+// length is 4e-4 m/s times the step) at pull increments of 0.125, 0.5 and
+// 1 mm, quasi-statically, and with implicit dynamics at 1 mm (the pull at
+// 20 mm/s; at 0.5 mm contact/drag_faces compares the two):
+//  - every run reaches 20 mm; a decline of the lateral force near 20 mm
+//    is reported as a stick-slip event (a drop of over 3 % in one step) by
+//    the 1 mm runs only: the count is printed, not checked;
 //  - every step: the potential never rose along a Newton update, Coulomb's
 //    law against the current normal forces within 1e-3 of mu times the
-//    largest normal force (settled or not; measured at most 9.2e-4);
-//  - against the 0.125 mm run at every millimetre: the normal force within
-//    2 % (measured 1.4 %), the lateral/normal ratio within 3 % from 2 mm
-//    on (measured 2.1 % at 0.5 mm and 2.9 % at 1 mm, both at 2 mm;
-//    within 1.9 % from 3 mm); at 1 mm, the 1 mm runs' first step of the pull,
-//    within 6 % (measured 5.4 %: the onset of sliding is resolved by the
-//    increment; doc/contact.md, "The potential on the faces").
+//    largest normal force (settled or not);
+//  - against the 0.125 mm run at every millimetre from 1 mm on: the normal
+//    force within 2 % and the lateral/normal ratio within 3 % (measured
+//    2026-12-08: 0.26 % and 1.5 % at 1 mm steps, 0.24 % and 1.1 % with
+//    implicit dynamics, 0.08 % and 0.5 % at 0.5 mm). With a
+//    fixed slip length of 1e-5 m (before 2026-12-08) the 1 mm run was
+//    5.4 % low at 1 mm: a sticking point creeps by up to the slip length
+//    per step, so the 0.125 mm run relaxed the friction built up in the
+//    press more (doc/contact.md, "Slip length or slip speed").
 // About 7 minutes.
 #include "../solver_factory.h"
 #include "../tests.h"
@@ -90,23 +92,18 @@ main(int argc, char **argv)
     const Pull p = r.mm_per_step == 0.125 && r.integrator == "quasi-static"
                        ? reference
                        : pull(r.integrator, r.mm_per_step);
-    // normal force over the pull, ratio from 2 mm, ratio at 1 mm
-    const auto   d = largest_differences(p.forces, reference.forces, 2, 2);
-    const double onset =
-        std::abs((p.forces[1][1] / p.forces[1][0]) /
-                     (reference.forces[1][1] / reference.forces[1][0]) -
-                 1);
-    const bool agree   = d[0] <= 0.02 && d[2] <= 0.03 && onset <= 0.06;
+    // normal force over the pull, ratio from 1 mm
+    const auto d       = largest_differences(p.forces, reference.forces, 1, 1);
+    const bool agree   = d[0] <= 0.02 && d[2] <= 0.03;
     const bool coulomb = p.largest_excess <= 1e-3;
     std::cout << r.integrator << ", " << r.mm_per_step << " mm: normal "
-              << 100 * d[0] << " %, ratio " << 100 * d[2] << " % (from 2 mm), "
-              << 100 * onset << " % at 1 mm; " << p.events
-              << " stick-slip events, largest Coulomb excess "
+              << 100 * d[0] << " %, ratio " << 100 * d[2] << " % (from 1 mm); "
+              << p.events << " stick-slip events, largest Coulomb excess "
               << p.largest_excess << std::endl;
     dealii::deallog << r.integrator << ", " << r.mm_per_step
                     << " mm: to 20 mm, Coulomb within 1e-3 " << coulomb
-                    << ", normal force within 2 % and ratio within 3 % (6 % "
-                    << "at 1 mm) of the 0.125 mm run " << agree << std::endl;
+                    << ", normal force within 2 % and ratio within 3 % of "
+                    << "the 0.125 mm run " << agree << std::endl;
     SG_CHECK(coulomb, "Coulomb's law at every step");
     SG_CHECK(agree, "the same curves across increments and integrators");
   }

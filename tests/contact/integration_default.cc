@@ -7,7 +7,11 @@
 //  - 'nodes' and 'faces' hold on both, with the factor following them;
 //  - a factor the user gives is kept whatever the integration;
 //  - the raw values stay as parsed ('automatic', factor 0), so a run's
-//    summary can say which were chosen.
+//    summary can say which were chosen;
+//  - the slip length of a step: 'Slip tolerance' on the implicit solvers
+//    whatever the step, scaled by the step over 'Time/Time step' on the
+//    explicit integrator; with a 'Slip speed', that speed times the step
+//    on both.
 #include "../tests.h"
 
 #include <softgrasp/contact/contact_parameters.h>
@@ -79,4 +83,28 @@ main()
   SG_CHECK(given.for_implicit().integrate_on_faces &&
                !given.for_explicit().integrate_on_faces,
            "a given factor does not move the contact");
+
+  // the slip length of steps of 0.05 and 0.0125 s, the implicit solvers
+  // passing their own step as the reference, the explicit integrator
+  // 'Time/Time step' = 0.025 s
+  for (const auto &[name, entries] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"slip tolerance 1e-5 m", ""},
+           {"slip speed 4e-4 m/s", "set Slip speed = 4e-4\n"}})
+  {
+    const auto p = parsed(entries);
+    dealii::deallog << name << ": implicit " << p.slip_length(0.05, 0.05)
+                    << ", " << p.slip_length(0.0125, 0.0125) << " m; explicit "
+                    << p.slip_length(0.05, 0.025) << ", "
+                    << p.slip_length(0.0125, 0.025) << " m" << std::endl;
+    const bool speed = p.slip_speed > 0;
+    SG_CHECK(
+        std::abs(p.slip_length(0.05, 0.05) - (speed ? 2e-5 : 1e-5)) < 1e-20 &&
+            std::abs(p.slip_length(0.0125, 0.0125) - (speed ? 5e-6 : 1e-5)) <
+                1e-20,
+        "implicit: the slip tolerance, or the speed times the step");
+    SG_CHECK(std::abs(p.slip_length(0.05, 0.025) - 2e-5) < 1e-20 &&
+                 std::abs(p.slip_length(0.0125, 0.025) - 5e-6) < 1e-20,
+             "explicit: scaled with the step either way");
+  }
 }

@@ -153,6 +153,20 @@ namespace softgrasp
         "default): faces for the implicit solvers, nodes for the explicit "
         "integrator. The run's summary names the one in use. Unit: none.");
     prm.declare_entry(
+        "Slip speed",
+        "0",
+        Patterns::Double(0),
+        "Incremental potential: if positive, the slip length eps of each "
+        "step is this speed times the step's length dt (IPC's eps_v dt), "
+        "and 'Slip tolerance' is not used. With a fixed slip length a "
+        "sticking node creeps by up to eps per step, so that a run of "
+        "smaller steps creeps more (and the friction built up in a press "
+        "relaxes more); with a slip speed the creep does not depend on the "
+        "step size, and a run converges as the steps shrink "
+        "(doc/contact.md, 'Slip length or slip speed'). Keep it small "
+        "against the sliding speed (the deep drag: 4e-4 m/s at a pull of "
+        "0.02 m/s). Unit: m/s. Range: [0, inf); 0: off.");
+    prm.declare_entry(
         "Explicit faces",
         "potential",
         Patterns::Selection("potential|dual mortar"),
@@ -239,6 +253,7 @@ namespace softgrasp
                        ". Fix: use one of them.");
     penalty_factor        = parsed_penalty_factor(prm);
     slip_tolerance        = prm.get_double("Slip tolerance");
+    slip_speed            = prm.get_double("Slip speed");
     settle_tolerance      = prm.get_double("Settle tolerance");
     max_outer_iterations  = prm.get_integer("Maximum outer iterations");
     max_newton_iterations = prm.get_integer("Maximum Newton iterations");
@@ -247,6 +262,14 @@ namespace softgrasp
     potential_integration = prm.get("Potential integration");
     explicit_dual_mortar  = prm.get("Explicit faces") == "dual mortar";
     prm.leave_subsection();
+  }
+
+  double ContactParameters::slip_length(const double step,
+                                        const double reference_step) const
+  {
+    if (slip_speed > 0)
+      return slip_speed * step;
+    return slip_tolerance * (reference_step > 0 ? step / reference_step : 1.0);
   }
 
   std::string ContactParameters::implicit_enforcement() const

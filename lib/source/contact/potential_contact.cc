@@ -25,7 +25,8 @@ namespace softgrasp
   void PotentialContact<dim>::setup(const SolidSystem<dim> &system)
   {
     ContactSurface<dim>::setup(system);
-    fd_step = 1e-7 * system.length_scale();
+    fd_step     = 1e-7 * system.length_scale();
+    slip_length = parameters.slip_tolerance;
     if (parameters.integrate_on_faces)
       make_face_points(system);
     else
@@ -55,8 +56,9 @@ namespace softgrasp
     step_changes = 0;
   }
 
-  template <int dim> void PotentialContact<dim>::begin_step()
+  template <int dim> void PotentialContact<dim>::begin_step(const double step)
   {
+    slip_length = parameters.slip_length(step, step);
     for (auto &point : points)
       point.lag = point.accepted;
     if (parameters.integrate_on_faces)
@@ -75,7 +77,7 @@ namespace softgrasp
     in.penalty              = d.penalty;
     in.mu                   = parameters.friction_coefficient;
     in.lagged_normal_force  = d.lag.normal_force;
-    in.slip_tolerance       = parameters.slip_tolerance;
+    in.slip_tolerance       = slip_length;
     in.current_normal_force = polishing;
     if (p.body >= 0 && in.multiplier - in.penalty * in.gap > 0)
       in.H = this->normal_gradient(p, x, fd_step);

@@ -222,9 +222,8 @@ namespace softgrasp
           predicted[node_column[j][c]] = u(node_list[j].dofs[c]);
         }
     // the same slip speed as an implicit step of 'Time/Time step'
-    const double eps = parameters.slip_tolerance *
-                       (reference_step > 0 ? dt / reference_step : 1.0);
-    correction = minimise_step(a, predicted, eps, u) - predicted;
+    const double eps = parameters.slip_length(dt, reference_step);
+    correction       = minimise_step(a, predicted, eps, u) - predicted;
     // the nodes' forces: the correction's M du / (dt h)
     for (unsigned int j = 0; j < node_list.size(); ++j)
     {

@@ -428,7 +428,7 @@ namespace softgrasp
     if (mortar)
     {
       mortar->set_time(time);
-      mortar->begin_step();
+      mortar->begin_step(time - run.state().time);
     }
     predict(run, time);
     const auto result = solve_outer(run, time);

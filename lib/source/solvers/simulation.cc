@@ -12,7 +12,8 @@ namespace softgrasp
   namespace
   {
     /// Where the implicit solvers' incremental potential puts its contact
-    /// terms and its penalty factor, for the run's summary; empty for the
+    /// terms, its penalty factor and its friction's slip length or speed,
+    /// for the run's summary; empty for the
     /// Lagrange multipliers.
     std::string potential_summary(const ContactParameters &given)
     {
@@ -24,6 +25,14 @@ namespace softgrasp
            << (given.potential_integration == "automatic" ? " (automatic)" : "")
            << ", penalty factor " << used.penalty_factor
            << (given.penalty_factor == 0 ? " (automatic)" : "");
+      if (given.friction_coefficient > 0)
+      {
+        if (given.slip_speed > 0)
+          text << ", slip speed " << given.slip_speed
+               << " m/s (slip length = speed x step)";
+        else
+          text << ", slip length " << given.slip_tolerance << " m";
+      }
       return text.str();
     }
   } // namespace

@@ -35,6 +35,18 @@ namespace softgrasp
     /// Incremental potential: the slip length eps of the smoothed Coulomb
     /// law (m): a node creeps by at most eps per step while it sticks.
     double slip_tolerance = 1e-5;
+    /// Incremental potential: if positive, the slip length of each step is
+    /// this speed times the step's length (IPC's eps_v dt), so that a
+    /// sticking node creeps at most this fast whatever the step, and
+    /// slip_tolerance is not used (m/s); 0: off.
+    double slip_speed = 0;
+    /// The slip length eps (m) of a step of length @p step (s): slip_speed
+    /// times @p step if it is set, else slip_tolerance times @p step over
+    /// @p reference_step (the explicit integrator's steps, against the
+    /// implicit step 'Time/Time step' that slip_tolerance is meant for;
+    /// the implicit solvers pass their own step, so that it is
+    /// slip_tolerance).
+    double slip_length(const double step, const double reference_step) const;
     /// Incremental potential: the outer iterations of a step stop when
     /// the normal forces change by at most this fraction of the largest
     /// (1) and the penetration is at most this fraction of the node

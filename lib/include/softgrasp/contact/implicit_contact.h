@@ -33,10 +33,11 @@ namespace softgrasp
     virtual void accept_step(const SolidSystem<dim> &system,
                              const double            time) = 0;
 
-    /// Start a load step (or its retry after a cut-back) from the state of
-    /// the last accept_step().
-    virtual void begin_step()
+    /// Start a load step of length @p step (s) (or its retry after a
+    /// cut-back) from the state of the last accept_step().
+    virtual void begin_step(const double step)
     {
+      (void)step;
     }
 
     /**

@@ -52,7 +52,7 @@ namespace softgrasp
     void setup(const SolidSystem<dim> &system) override;
     void accept_step(const SolidSystem<dim> &system,
                      const double            time) override;
-    void begin_step() override;
+    void begin_step(const double step) override;
     bool settle(const SolidSystem<dim> &system, std::string &report) override;
     unsigned int max_outer_iterations() const override;
     unsigned int max_newton_iterations() const override;
@@ -205,8 +205,11 @@ namespace softgrasp
                                         const Eigen::Vector3d &x,
                                         const Proximity       &p) const;
 
-    const double                   shear_modulus;
-    double                         fd_step = 1e-9; ///< m
+    const double shear_modulus;
+    double       fd_step = 1e-9; ///< m
+    /// The slip length eps of the step begun last (m; 'Slip tolerance'
+    /// until the first).
+    double                         slip_length = 1e-5;
     dealii::TimerOutput           &timer;
     std::vector<std::vector<Pose>> poses_converged;
     std::vector<Point>             points;
