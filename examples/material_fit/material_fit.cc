@@ -20,7 +20,10 @@
 //    into a simulation's material subsection;
 //  - every data point beside the fit's stress and the relative error
 //    (material_fit.csv), and the fitted curve at many stretches;
-//  - with gnuplot, a PNG of the curve over the data points.
+//  - with gnuplot, a PNG of the curve over the data points;
+//  - whether the fitted model is Drucker-stable over the data's stretches
+//    (softgrasp::DruckerStability): a fit can be unstable between or
+//    beyond its points.
 //
 // The shipped material_fit.prm fits a three-term Ogden solid to Treloar's
 // uniaxial data of natural rubber (treloar_1944_uniaxial.csv), the data of
@@ -44,6 +47,7 @@
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/base/program_arguments.h>
+#include <softgrasp/materials/drucker_stability.h>
 #include <softgrasp/materials/material_fit.h>
 #include <softgrasp/materials/material_library.h>
 
@@ -258,6 +262,18 @@ main(int argc, char **argv)
               << std::setprecision(3) << result.rms_error << ", largest "
               << result.max_error << "\nFitted entries:\n"
               << result.prm_lines();
+    // the fitted model may be unstable outside its data: check it over
+    // the data's stretches (and l = 1)
+    double from = 1, to = 1;
+    for (const auto &point : data)
+    {
+      from = std::min(from, point.stretch);
+      to   = std::max(to, point.stretch);
+    }
+    std::cout << "The fit is "
+              << DruckerStability::check(*fit.material(result.values), from, to)
+                     .summary(from, to)
+              << "\n";
     if (!result.converged)
       std::cout << "Warning: the fit did not converge; the entries above "
                    "are its last iterate. Fix: start closer or raise "

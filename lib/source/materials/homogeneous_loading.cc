@@ -3,6 +3,7 @@
 #include <deal.II/lac/vector.h>
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/materials/homogeneous_loading.h>
+#include <sstream>
 #include <vector>
 
 namespace softgrasp
@@ -29,40 +30,57 @@ namespace softgrasp
         for (unsigned int i = 0; i < 3; ++i)
           F[i][i] = stretches[i];
         material.evaluate_material(F, directions, true, response);
-        double residual = 0, scale = std::abs(response.stress[0][0]);
+        // in Kirchhoff stresses tau_aa = l_a^2 S_aa: relative to S_00 a
+        // stretch that runs away (S_aa = tau_aa / l_a^2 small) looked
+        // converged
+        double residual = 0, scale = std::abs(response.stress[0][0]) *
+                                     stretches[0] * stretches[0];
         for (unsigned int a = 0; a < n; ++a)
-          residual =
-              std::max(residual, std::abs(response.stress[free[a]][free[a]]));
+          residual = std::max(residual,
+                              std::abs(response.stress[free[a]][free[a]]) *
+                                  stretches[free[a]] * stretches[free[a]]);
         scale = std::max(scale, material.initial_shear_modulus());
         // round-off in the stress grows with the bulk modulus
         if (residual <=
             std::max(1e-12 * scale, 1e-14 * material.bulk_modulus()))
           break;
-        // dS_aa/dl_b = CC_aabb l_b
+        // Newton on tau_aa = l_a^2 S_aa = 0 in the unknowns ln l_a:
+        // d tau_aa / d ln l_b = l_a^2 CC_aabb l_b^2 + 2 delta_ab tau_aa.
+        // (On S_aa = 0 in l a compressed state could step the free stretch
+        // away to infinity, where S_aa = tau_aa / l_a^2 falls.)
         FullMatrix<double> K(n, n);
-        Vector<double>     r(n), dl(n);
+        Vector<double>     r(n), dlog(n);
         for (unsigned int a = 0; a < n; ++a)
         {
-          r[a] = -response.stress[free[a]][free[a]];
+          const unsigned int A = free[a];
+          const double       tau =
+              stretches[A] * stretches[A] * response.stress[A][A];
+          r[a] = -tau;
           for (unsigned int b = 0; b < n; ++b)
-            K(a, b) = response.tangent[free[a]][free[a]][free[b]][free[b]] *
-                      stretches[free[b]];
+          {
+            const unsigned int B = free[b];
+            K(a, b)              = stretches[A] * stretches[A] *
+                      response.tangent[A][A][B][B] * stretches[B] *
+                      stretches[B];
+          }
+          K(a, a) += 2 * tau;
         }
         K.gauss_jordan();
-        K.vmult(dl, r);
+        K.vmult(dlog, r);
+        // at most a factor of 2 per step
         for (unsigned int a = 0; a < n; ++a)
-        {
-          // keep stretches positive: never step more than half way to 0
-          double step = dl[a];
-          if (stretches[free[a]] + step < 0.5 * stretches[free[a]])
-            step = -0.5 * stretches[free[a]];
-          stretches[free[a]] += step;
-        }
+          stretches[free[a]] *= std::exp(
+              std::max(-std::log(2.0), std::min(std::log(2.0), dlog[a])));
       }
       if (it == 50)
+      {
+        std::ostringstream state;
+        state << stretches[0] << ", " << stretches[1] << ", " << stretches[2];
         throw InputError("Homogeneous loading of material '" + material.name() +
-                         "' did not converge in 50 Newton iterations. Fix: "
-                         "use a smaller stretch.");
+                         "' did not converge in 50 Newton iterations (last "
+                         "stretches " +
+                         state.str() + "). Fix: use a smaller stretch.");
+      }
       const double off_diagonal = std::max({std::abs(response.stress[0][1]),
                                             std::abs(response.stress[0][2]),
                                             std::abs(response.stress[1][2])});
