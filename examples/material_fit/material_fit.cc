@@ -26,8 +26,9 @@
 //    beyond its points.
 //
 // The shipped material_fit.prm fits a three-term Ogden solid to Treloar's
-// uniaxial data of natural rubber (treloar_1944_uniaxial.csv), the data of
-// Ogden's classic fit that the library's 'natural rubber' preset uses.
+// uniaxial and equibiaxial data of natural rubber (treloar_1944.csv), the
+// data of Ogden's classic fit that the library's 'natural rubber' preset
+// uses; the fit lands near Ogden's parameters (doc/materials.md).
 //
 // Run it as
 //   ./material_fit material_fit.prm
