@@ -71,14 +71,16 @@ namespace softgrasp
   {
     const Point        &d = points[i];
     NodalPotentialInput in;
-    in.gap                  = p.body >= 0 ? p.gap : 1e300;
-    in.n                    = p.body >= 0 ? p.normal : Eigen::Vector3d::UnitZ();
-    in.multiplier           = d.lag.multiplier;
-    in.penalty              = d.penalty;
-    in.mu                   = parameters.friction_coefficient;
-    in.lagged_normal_force  = d.lag.normal_force;
-    in.slip_tolerance       = slip_length;
-    in.current_normal_force = polishing;
+    in.gap                 = p.body >= 0 ? p.gap : 1e300;
+    in.n                   = p.body >= 0 ? p.normal : Eigen::Vector3d::UnitZ();
+    in.multiplier          = d.lag.multiplier;
+    in.penalty             = d.penalty;
+    in.mu                  = parameters.friction_coefficient;
+    in.lagged_normal_force = d.lag.normal_force;
+    in.slip_tolerance      = slip_length;
+    // the nodes' polish: friction against the point's own current force;
+    // the faces' (polish_on_faces()): against the projected pressure
+    in.current_normal_force = polishing && !parameters.integrate_on_faces;
     if (p.body >= 0 && in.multiplier - in.penalty * in.gap > 0)
       in.H = this->normal_gradient(p, x, fd_step);
     if (d.lag.body >= 0 && d.lag.normal_force > 0)
@@ -135,6 +137,8 @@ namespace softgrasp
       energy += point.potential.energy;
       changes += point.potential.status != before;
     }
+    if (polishing && parameters.integrate_on_faces)
+      energy = polish_on_faces(u);
     update_nodes(system);
     unsigned int active = 0, slipping = 0;
     for (const Node &node : node_list)
@@ -355,8 +359,6 @@ namespace softgrasp
   {
     if (parameters.friction_coefficient == 0)
       return false; // nothing is lagged but the multipliers
-    if (parameters.integrate_on_faces)
-      return false; // a point's own force is not the pressure it lags
     lag_before_polish.resize(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       lag_before_polish[i] = points[i].lag;

@@ -267,6 +267,36 @@ namespace softgrasp
       }
   }
 
+  template <int dim>
+  double
+  PotentialContact<dim>::polish_on_faces(const TrilinosWrappers::MPI::Vector &u)
+  {
+    // the pressure Lambda_k(x) = max(0, sum_q N_k lambda_q(x) / D_k)
+    // projected from the points' current forces, as the settle test
+    // measures Coulomb's law against it; the points' friction again with
+    // that bound. Its derivative through the projection, which couples the
+    // points of neighbouring faces, is left out of the Hessian: Newton's
+    // method with backtracking on the residual still converges where the
+    // friction's own stiffness dominates.
+    nodal_settle_measures();
+    projected_ghosted = projected_multiplier;
+    double energy     = 0;
+    for (const Patch &patch : patches)
+      for (unsigned int i = patch.begin; i < patch.end; ++i)
+      {
+        Point &point    = points[i];
+        double pressure = 0;
+        for (unsigned int k = 0; k < point.shape.size(); ++k)
+          pressure += point.shape[k] * projected_ghosted[patch.dofs[k * dim]];
+        NodalPotentialInput in =
+            potential_input(i, position(i, u), point.proximity);
+        in.lagged_normal_force = std::max(0.0, pressure) * point.weight;
+        point.potential        = evaluate_nodal_potential(in);
+        energy += point.potential.energy;
+      }
+    return energy;
+  }
+
   template <int dim> double PotentialContact<dim>::coulomb_excess_on_faces()
   {
     projected_ghosted   = projected_multiplier;
@@ -316,7 +346,9 @@ namespace softgrasp
   template std::array<double, 3>                                               \
                   PotentialContact<dim>::nodal_settle_measures();              \
   template void   PotentialContact<dim>::project_multipliers();                \
-  template double PotentialContact<dim>::coulomb_excess_on_faces();
+  template double PotentialContact<dim>::coulomb_excess_on_faces();            \
+  template double PotentialContact<dim>::polish_on_faces(                      \
+      const TrilinosWrappers::MPI::Vector &);
   SOFTGRASP_INSTANTIATE(2)
   SOFTGRASP_INSTANTIATE(3)
 #undef SOFTGRASP_INSTANTIATE

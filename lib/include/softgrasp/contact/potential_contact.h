@@ -187,6 +187,10 @@ namespace softgrasp
     /// Set @p point's multiplier and lagged normal force to @p normal_force
     /// (N; the latter 0 away from any geom), its frame to its current normal.
     void lag_at(Point &point, const double normal_force);
+    /// Face mode, in the polish: the points' friction against the pressure
+    /// projected from their current forces (its derivative frozen);
+    /// returns the potential's energy (J). Collective.
+    double polish_on_faces(const dealii::TrilinosWrappers::MPI::Vector &u);
     /// Face mode, after nodal_settle_measures(): max_q (|f_t,q| - mu w_q
     /// sum_k N_k Lambda_k) over the points, Lambda the projected
     /// multipliers, relative to mu times the largest point force
