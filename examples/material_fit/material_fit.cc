@@ -48,6 +48,7 @@
 #include <softgrasp/base/input_error.h>
 #include <softgrasp/base/parameter_reader.h>
 #include <softgrasp/base/program_arguments.h>
+#include <softgrasp/base/run_manifest.h>
 #include <softgrasp/materials/drucker_stability.h>
 #include <softgrasp/materials/material_fit.h>
 #include <softgrasp/materials/material_library.h>
@@ -78,7 +79,8 @@ struct Parameters
     prm.declare_entry("Data file",
                       "",
                       Patterns::Anything(),
-                      "CSV table of measured points: '#' comment lines "
+                      "CSV table of measured points, relative to this "
+                      "file's directory: '#' comment lines "
                       "(the source), the header "
                       "'test,stretch,nominal_stress_Pa', then rows of "
                       "'uniaxial' or 'equibiaxial', the stretch (1) and the "
@@ -113,12 +115,18 @@ struct Parameters
     MaterialLibrary::declare_parameters(prm);
   }
 
-  void parse(ParameterHandler &prm)
+  /// Read the entries; a relative 'Data file' is taken from the
+  /// directory of the parameter file @p prm_file.
+  void parse(ParameterHandler &prm, const std::string &prm_file)
   {
-    output_directory = prm.get("Output directory");
-    data_file        = Utilities::trim(prm.get("Data file"));
-    material_id      = prm.get_integer("Material id");
-    entries          = Utilities::split_string_list(prm.get("Fitted entries"));
+    output_directory     = prm.get("Output directory");
+    data_file            = Utilities::trim(prm.get("Data file"));
+    const auto directory = std::filesystem::path(prm_file).parent_path();
+    if (!data_file.empty() && data_file[0] != '/' && !directory.empty())
+      data_file = (directory / data_file).string();
+    RunManifest::protect_input(data_file);
+    material_id = prm.get_integer("Material id");
+    entries     = Utilities::split_string_list(prm.get("Fitted entries"));
     options.stress_floor    = prm.get_double("Stress floor");
     options.max_evaluations = prm.get_integer("Maximum evaluations");
     plot                    = prm.get_bool("Plot");
@@ -243,7 +251,7 @@ main(int argc, char **argv)
       return 0;
     }
     MaterialLibrary::parse_input(prm, arguments.parameter_file);
-    parameters.parse(prm);
+    parameters.parse(prm, arguments.parameter_file);
     const auto  data = read_stress_stretch_table(parameters.data_file);
     MaterialFit fit(prm, parameters.material_id, parameters.entries);
     if (arguments.dry_run)

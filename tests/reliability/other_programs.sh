@@ -1,6 +1,6 @@
 #!/bin/bash
 # Every program recognises another program's file (issue 55): each of the
-# eleven programs is given every shipped .prm. A file of a program it does
+# twelve programs is given every shipped .prm. A file of a program it does
 # not read is refused before anything runs, with exit code 1, a clean
 # 'Error:' and the name of the program the file is written for (its
 # 'Program' entry); a file it reads passes a dry run (--dry-run: read and
@@ -20,6 +20,7 @@ declare -A exe=(
   [hertz_indentation]=examples/hertz_indentation/hertz_indentation
   [ironing]=examples/ironing/ironing
   [tissue_curves]=examples/tissue_curves/tissue_curves
+  [material_fit]=examples/material_fit/material_fit
   [sphere_squeeze]=studies/sphere_squeeze/sphere_squeeze
   [arm_grasp]=studies/arm_grasp/arm_grasp
   [grasp_pull_sweep]=studies/grasp_pull_sweep/grasp_pull_sweep

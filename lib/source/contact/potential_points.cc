@@ -250,6 +250,17 @@ namespace softgrasp
              Utilities::MPI::max(penetration, comm)}};
   }
 
+  template <int dim>
+  double PotentialContact<dim>::point_pressure(
+      const Point &point, const TrilinosWrappers::MPI::Vector &nodal) const
+  {
+    const Patch &patch    = patches[point.patch];
+    double       pressure = 0;
+    for (unsigned int k = 0; k < point.shape.size(); ++k)
+      pressure += point.shape[k] * nodal[patch.dofs[k * dim]];
+    return pressure;
+  }
+
   template <int dim> void PotentialContact<dim>::project_multipliers()
   {
     owned_multiplier = projected_multiplier;
@@ -257,10 +268,8 @@ namespace softgrasp
     for (const Patch &patch : patches)
       for (unsigned int i = patch.begin; i < patch.end; ++i)
       {
-        Point &point    = points[i];
-        double pressure = 0;
-        for (unsigned int k = 0; k < point.shape.size(); ++k)
-          pressure += point.shape[k] * nodal_multiplier[patch.dofs[k * dim]];
+        Point       &point    = points[i];
+        const double pressure = point_pressure(point, nodal_multiplier);
         // friction against the same smooth pressure: the points' own
         // forces flip where their gap is near zero
         lag_at(point, std::max(0.0, pressure) * point.weight);
@@ -284,10 +293,8 @@ namespace softgrasp
     for (const Patch &patch : patches)
       for (unsigned int i = patch.begin; i < patch.end; ++i)
       {
-        Point &point    = points[i];
-        double pressure = 0;
-        for (unsigned int k = 0; k < point.shape.size(); ++k)
-          pressure += point.shape[k] * projected_ghosted[patch.dofs[k * dim]];
+        Point              &point    = points[i];
+        const double        pressure = point_pressure(point, projected_ghosted);
         NodalPotentialInput in =
             potential_input(i, position(i, u), point.proximity);
         in.lagged_normal_force = std::max(0.0, pressure) * point.weight;
@@ -305,10 +312,8 @@ namespace softgrasp
     for (const Patch &patch : patches)
       for (unsigned int i = patch.begin; i < patch.end; ++i)
       {
-        const Point &point    = points[i];
-        double       pressure = 0;
-        for (unsigned int k = 0; k < point.shape.size(); ++k)
-          pressure += point.shape[k] * projected_ghosted[patch.dofs[k * dim]];
+        const Point &point        = points[i];
+        const double pressure     = point_pressure(point, projected_ghosted);
         const double normal_force = std::max(0.0, pressure) * point.weight;
         largest                   = std::max(largest, normal_force);
         beyond                    = std::max(beyond,
@@ -348,7 +353,9 @@ namespace softgrasp
   template void   PotentialContact<dim>::project_multipliers();                \
   template double PotentialContact<dim>::coulomb_excess_on_faces();            \
   template double PotentialContact<dim>::polish_on_faces(                      \
-      const TrilinosWrappers::MPI::Vector &);
+      const TrilinosWrappers::MPI::Vector &);                                  \
+  template double PotentialContact<dim>::point_pressure(                       \
+      const Point &, const TrilinosWrappers::MPI::Vector &) const;
   SOFTGRASP_INSTANTIATE(2)
   SOFTGRASP_INSTANTIATE(3)
 #undef SOFTGRASP_INSTANTIATE

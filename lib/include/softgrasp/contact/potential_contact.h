@@ -187,6 +187,11 @@ namespace softgrasp
     /// Set @p point's multiplier and lagged normal force to @p normal_force
     /// (N; the latter 0 away from any geom), its frame to its current normal.
     void lag_at(Point &point, const double normal_force);
+    /// The pressure sum_k N_k(x_q) v_k (Pa) at @p point from the nodal
+    /// values @p nodal (ghosted where the point's face is not owned).
+    double
+    point_pressure(const Point                                 &point,
+                   const dealii::TrilinosWrappers::MPI::Vector &nodal) const;
     /// Face mode, in the polish: the points' friction against the pressure
     /// projected from their current forces (its derivative frozen);
     /// returns the potential's energy (J). Collective.
