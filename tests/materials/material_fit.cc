@@ -217,6 +217,15 @@ namespace
         },
         "is not an entry of the material");
     expect_error(
+        "empty entry",
+        [&]
+        {
+          ParameterHandler prm;
+          parse(prm, neo);
+          MaterialFit fit(prm, 0, {"neo-Hookean/Shear modulus", ""});
+        },
+        "An entry to fit is empty");
+    expect_error(
         "too few points",
         [&]
         {

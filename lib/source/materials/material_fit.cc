@@ -157,9 +157,9 @@ namespace softgrasp
           "Cannot read the stress-stretch table '" + filename + "'" +
           (std::filesystem::exists(filename) ? " (no permission)."
                                              : " (no such file).") +
-          " Fix: give the path of a CSV file with the header "
-          "'test,stretch,nominal_stress_Pa', relative to the "
-          "working directory.");
+          " Fix: give the path of an existing CSV file with the header "
+          "'test,stretch,nominal_stress_Pa' (a program's 'Data file' is "
+          "relative to its parameter file).");
     std::vector<StressStretchPoint> points;
     std::string                     line;
     bool                            header = false;
@@ -222,11 +222,15 @@ namespace softgrasp
                        section + "', such as 'Ogden/Moduli'.");
     for (const auto &entry : entries)
     {
-      const auto  parts = path_parts(entry);
+      const auto parts = path_parts(entry);
+      if (parts.empty() || parts.back().empty())
+        throw InputError("An entry to fit is empty ('" + entry +
+                         "'). Fix: name entries of 'Materials/" + section +
+                         "' separated by commas, such as 'Ogden/Moduli'.");
       std::string text;
       try
       {
-        const auto scope = enter(parts);
+        const auto scope = enter({parts.begin(), parts.end() - 1});
         text             = prm.get(parts.back());
         // get() of an undeclared entry gives "" in release builds; set()
         // throws
@@ -262,13 +266,13 @@ namespace softgrasp
   }
 
   std::vector<std::unique_ptr<ScopedSubsection>>
-  MaterialFit::enter(const std::vector<std::string> &parts) const
+  MaterialFit::enter(const std::vector<std::string> &subsections) const
   {
     std::vector<std::unique_ptr<ScopedSubsection>> scope;
     scope.push_back(std::make_unique<ScopedSubsection>(prm, "Materials"));
     scope.push_back(std::make_unique<ScopedSubsection>(prm, section));
-    for (std::size_t k = 0; k + 1 < parts.size(); ++k)
-      scope.push_back(std::make_unique<ScopedSubsection>(prm, parts[k]));
+    for (const auto &name : subsections)
+      scope.push_back(std::make_unique<ScopedSubsection>(prm, name));
     return scope;
   }
 
@@ -277,7 +281,7 @@ namespace softgrasp
     for (std::size_t e = 0; e < entries.size(); ++e)
     {
       const auto parts = path_parts(entries[e]);
-      const auto scope = enter(parts);
+      const auto scope = enter({parts.begin(), parts.end() - 1});
       prm.set(parts.back(), joined(values[e]));
     }
   }
@@ -286,7 +290,7 @@ namespace softgrasp
   MaterialFit::material(const std::vector<std::vector<double>> &values)
   {
     set_entries(values);
-    const auto scope = enter({""});
+    const auto scope = enter({});
     return MaterialLibrary::create_material(prm, "Materials/" + section, "fit");
   }
 
@@ -328,8 +332,9 @@ namespace softgrasp
     // the start must be a material the model accepts
     try
     {
+      const auto first = material(start);
       for (const auto &point : data)
-        nominal_stress(*material(start), point.test, point.stretch);
+        nominal_stress(*first, point.test, point.stretch);
     }
     catch (const InputError &e)
     {

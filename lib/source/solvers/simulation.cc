@@ -13,8 +13,7 @@ namespace softgrasp
   {
     /// Where the implicit solvers' incremental potential puts its contact
     /// terms, its penalty factor and its friction's slip length or speed,
-    /// for the run's summary; empty for the
-    /// Lagrange multipliers.
+    /// for the run's summary; empty for the Lagrange multipliers.
     std::string potential_summary(const ContactParameters &given)
     {
       if (given.implicit_enforcement() != "incremental potential")

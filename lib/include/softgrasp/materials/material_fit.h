@@ -121,10 +121,10 @@ namespace softgrasp
     std::vector<std::string>         entries;
     std::vector<std::vector<double>> start; // per entry
 
-    /// Enter Materials/Material <id> and the subsections of an entry's
-    /// path @p parts (all but the last), until the result is destroyed.
+    /// Enter Materials/Material <id> and then @p subsections (an entry's
+    /// path without the entry), until the result is destroyed.
     std::vector<std::unique_ptr<ScopedSubsection>>
-    enter(const std::vector<std::string> &parts) const;
+    enter(const std::vector<std::string> &subsections) const;
 
     /// Set the entries in prm to @p values.
     void set_entries(const std::vector<std::vector<double>> &values);
